@@ -1,0 +1,1 @@
+"""agents (work in progress)."""

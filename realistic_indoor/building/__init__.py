@@ -1,0 +1,27 @@
+"""The data model: ``Building``, ``Room``, ``Door``, labels, topology, walls and checks."""
+
+from realistic_indoor.building.building import Building
+from realistic_indoor.building.check import Finding, InvalidBuildingError, check_building
+from realistic_indoor.building.door import Door
+from realistic_indoor.building.labels import (
+    ROOM_LABELS,
+    BuildingType,
+    SemanticLabel,
+    parse_building_type,
+    parse_label,
+)
+from realistic_indoor.building.room import Room
+
+__all__ = [
+    "ROOM_LABELS",
+    "Building",
+    "BuildingType",
+    "Door",
+    "Finding",
+    "InvalidBuildingError",
+    "Room",
+    "SemanticLabel",
+    "check_building",
+    "parse_building_type",
+    "parse_label",
+]

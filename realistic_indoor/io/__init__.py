@@ -1,0 +1,8 @@
+"""Reading and writing buildings: JSON, floor-plan XML, World Generator XML, ROS maps, pictures.
+
+``load(path)`` and ``save(building, path)`` choose the format from the file name.
+"""
+
+from realistic_indoor.io.registry import FORMATS, format_of, load, save
+
+__all__ = ["FORMATS", "format_of", "load", "save"]

@@ -1,0 +1,102 @@
+"""Lossless JSON: every field of a ``Building``, under a versioned schema."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+from realistic_indoor.building import Building, Door, Room
+from realistic_indoor.errors import PlanFormatError
+
+__all__ = ["SCHEMA", "SCHEMA_VERSION", "dumps", "from_dict", "loads", "read", "to_dict", "write"]
+
+SCHEMA = "realistic-indoor/building"
+SCHEMA_VERSION = 1
+
+
+def to_dict(b: Building) -> dict[str, Any]:
+    """The building as plain JSON-ready data (floats kept exactly)."""
+    return {
+        "schema": SCHEMA,
+        "version": SCHEMA_VERSION,
+        "building_type": b.building_type.value,
+        "metadata": b.metadata,
+        "rooms": [
+            {
+                "id": r.id,
+                "label": r.label.value,
+                "function": r.function,
+                "outline": [list(p) for p in r.outline],
+            }
+            for r in b.rooms
+        ],
+        "doors": [
+            {
+                "id": d.id,
+                "rooms": [d.room_a, d.room_b],
+                "x": d.x,
+                "y": d.y,
+                "width_m": d.width_m,
+                "angle_rad": d.angle_rad,
+            }
+            for d in b.doors
+        ],
+    }
+
+
+def from_dict(data: dict[str, Any], source: str = "<data>") -> Building:
+    """Rebuild a building from :func:`to_dict` output.
+
+    Raises:
+        PlanFormatError: If the schema or version is not this one, or a field is missing.
+    """
+    if not isinstance(data, dict) or data.get("schema") != SCHEMA:
+        raise PlanFormatError(source, f'not a building file (expected "schema": "{SCHEMA}")')
+    if data.get("version") != SCHEMA_VERSION:
+        raise PlanFormatError(
+            source,
+            f"schema version {data.get('version')!r} is not supported (this version reads {SCHEMA_VERSION})",
+        )
+    element = "building"
+    try:
+        rooms = []
+        for i, r in enumerate(data["rooms"]):
+            element = f"rooms[{i}]"
+            rooms.append(Room(r["id"], r["label"], r["function"], tuple(tuple(p) for p in r["outline"])))
+        doors = []
+        for i, d in enumerate(data["doors"]):
+            element = f"doors[{i}]"
+            a, b = d["rooms"]
+            doors.append(Door(d["id"], a, b, d["x"], d["y"], d["width_m"], d["angle_rad"]))
+        element = "building"
+        return Building(data["building_type"], tuple(rooms), tuple(doors), dict(data.get("metadata", {})))
+    except KeyError as e:
+        raise PlanFormatError(source, f"missing field {e}", element) from None
+    except (TypeError, ValueError) as e:
+        raise PlanFormatError(source, str(e), element) from None
+
+
+def dumps(b: Building) -> str:
+    """The building as a JSON string (stable key order, so equal buildings give equal text)."""
+    return json.dumps(to_dict(b), indent=1, sort_keys=True)
+
+
+def loads(text: str, source: str = "<string>") -> Building:
+    """Parse a building from :func:`dumps` output."""
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise PlanFormatError(source, f"malformed JSON: {e}") from None
+    return from_dict(data, source)
+
+
+def read(path: str | Path) -> Building:
+    """Read a building from a JSON file."""
+    return loads(Path(path).read_text(encoding="utf-8"), str(path))
+
+
+def write(b: Building, path: str | Path) -> list[Path]:
+    """Write a building to a JSON file."""
+    Path(path).write_text(dumps(b) + "\n", encoding="utf-8")
+    return [Path(path)]

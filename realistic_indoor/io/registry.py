@@ -1,0 +1,92 @@
+"""Which module reads and writes which file format, chosen from the file name."""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from realistic_indoor.errors import PlanFormatError, RealisticIndoorError
+
+if TYPE_CHECKING:
+    from realistic_indoor.building.building import Building
+
+__all__ = ["FORMATS", "READABLE", "WRITABLE", "format_of", "load", "save"]
+
+# name: (file endings, module under realistic_indoor.io, can read, can write)
+FORMATS: dict[str, tuple[tuple[str, ...], str, bool, bool]] = {
+    "json": ((".json",), "json_format", True, True),
+    "worldgen": ((".wg.xml",), "worldgen", True, True),
+    "floorplan": ((".xml",), "floorplan_xml", True, True),
+    "ros": ((".yaml", ".pgm"), "ros_map", False, True),
+    "png": ((".png",), "render", False, True),
+    "svg": ((".svg",), "render", False, True),
+}
+READABLE = tuple(k for k, v in FORMATS.items() if v[2])
+WRITABLE = tuple(k for k, v in FORMATS.items() if v[3])
+
+
+def format_of(path: str | Path, fmt: str | None = None) -> str:
+    """The format name of ``path`` from its ending (longest match), or ``fmt`` if given.
+
+    Raises:
+        RealisticIndoorError: If the ending is unknown; the message lists the known ones.
+    """
+    if fmt is not None:
+        if fmt not in FORMATS:
+            raise RealisticIndoorError(f"unknown format {fmt!r}; known formats: {', '.join(FORMATS)}")
+        return fmt
+    name = Path(path).name.lower()
+    matches = [(len(e), f) for f, (ends, *_rest) in FORMATS.items() for e in ends if name.endswith(e)]
+    if not matches:
+        ends = ", ".join(e for ends, *_ in FORMATS.values() for e in ends)
+        raise RealisticIndoorError(f"{path}: cannot tell the format from the file name; use one of {ends}")
+    return max(matches)[1]
+
+
+def _module(fmt: str):
+    return importlib.import_module(f"realistic_indoor.io.{FORMATS[fmt][1]}")
+
+
+def load(path: str | Path, fmt: str | None = None, **options: Any) -> Building:
+    """Read a building from ``path``; the format comes from the ending unless ``fmt`` is given.
+
+    A ``.xml`` file whose root element is ``<world>`` is read as World Generator XML.
+
+    Raises:
+        PlanFormatError: If the file is missing, unreadable or malformed.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise PlanFormatError(path, "no such file" if not path.exists() else "not a file")
+    fmt = format_of(path, fmt)
+    if fmt == "floorplan" and _root_tag(path) == "world":
+        fmt = "worldgen"
+    if not FORMATS[fmt][2]:
+        raise PlanFormatError(
+            path, f"{fmt} files can be written but not read; readable: {', '.join(READABLE)}"
+        )
+    return _module(fmt).read(path, **options)
+
+
+def save(building: Building, path: str | Path, fmt: str | None = None, **options: Any) -> list[Path]:
+    """Write ``building`` to ``path`` in the format its ending names (or ``fmt``).
+
+    Returns:
+        The files written (a ROS map writes an image and a YAML file).
+    """
+    path = Path(path)
+    fmt = format_of(path, fmt)
+    if path.parent and not path.parent.exists():
+        path.parent.mkdir(parents=True, exist_ok=True)
+    written = _module(fmt).write(building, path, **options)
+    return list(written) if written else [path]
+
+
+def _root_tag(path: Path) -> str | None:
+    """The first element's tag, read cheaply (``None`` if it cannot be found)."""
+    import re
+
+    head = path.read_bytes()[:4096].decode("utf-8", "replace")
+    m = re.search(r"<\s*([A-Za-z_][\w.-]*)", re.sub(r"<\?.*?\?>|<!--.*?-->", "", head, flags=re.S))
+    return m.group(1) if m else None

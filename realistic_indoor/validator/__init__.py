@@ -1,0 +1,1 @@
+"""validator (work in progress)."""

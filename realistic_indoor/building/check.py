@@ -116,7 +116,7 @@ def _check_overlaps(b: Building, tol_m2: float) -> list[Finding]:
     rooms = [r for r in b.rooms if len(r.outline) >= 3 and r.polygon.is_valid]
     tree = STRtree([r.polygon for r in rooms])
     out = []
-    for i, j in zip(*tree.query([r.polygon for r in rooms], predicate="intersects")):
+    for i, j in zip(*tree.query([r.polygon for r in rooms], predicate="intersects"), strict=True):
         if i < j:
             shared = rooms[i].polygon.intersection(rooms[j].polygon).area
             if shared > tol_m2:

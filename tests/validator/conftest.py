@@ -90,7 +90,28 @@ def two_gateway_chain() -> Building:
     return Building("office", rooms, doors)
 
 
-def strip_labels(b: Building) -> Building:
-    """The same plan with no semantic or functional labels (every room "medium", "unknown")."""
+def _strip_labels(b: Building) -> Building:
     rooms = tuple(Room(r.id, "medium", "unknown", r.outline) for r in b.rooms)
     return Building(b.building_type, rooms, b.doors, dict(b.metadata))
+
+
+@pytest.fixture
+def strip_labels():
+    """A function that gives a plan without labels (every room "medium", function "unknown")."""
+    return _strip_labels
+
+
+def _scaled(b: Building, factor: float) -> Building:
+    rooms = tuple(
+        Room(r.id, r.label, r.function, [(x * factor, y * factor) for x, y in r.outline]) for r in b.rooms
+    )
+    doors = tuple(
+        Door(d.id, d.room_a, d.room_b, d.x * factor, d.y * factor, d.width_m, d.angle_rad) for d in b.doors
+    )
+    return Building(b.building_type, rooms, doors, dict(b.metadata))
+
+
+@pytest.fixture
+def scaled():
+    """A function that gives a plan with every length multiplied by a factor."""
+    return _scaled

@@ -1,0 +1,40 @@
+import pytest
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.validator.two_sample import FEATURE_NAMES, building_features, two_sample_test
+
+
+def test_building_features__one_value_per_name_and_no_nan(maze_office):
+    v = building_features(maze_office)
+    assert v.shape == (len(FEATURE_NAMES),)
+    named = dict(zip(FEATURE_NAMES, v, strict=True))
+    assert named["corridor share"] == pytest.approx(0.25)
+    assert named["corridor doorways"] == pytest.approx(3.5)
+    assert named["hall doorways"] == 0.0
+    assert named["core_touching_corridor_pct"] == pytest.approx(0.6)
+
+
+def test_two_sample_test__identical_sets_are_indistinguishable(maze_office):
+    r = two_sample_test([maze_office] * 6, [maze_office] * 6, names=("a", "b"))
+    assert r.accuracy == pytest.approx(0.5)
+    assert r.telling_features == ()
+
+
+def test_two_sample_test__different_structures_are_separable(maze_office, tiny_office, scaled):
+    a = [scaled(maze_office, f) for f in (0.9, 1.0, 1.1, 1.2, 1.3)]
+    b = [scaled(tiny_office, f) for f in (0.9, 1.0, 1.1, 1.2, 1.3, 1.4)]
+    r = two_sample_test(a, b, names=("maze", "tiny"), seed=3)
+    assert r.accuracy == pytest.approx(1.0)
+    assert (r.n_a, r.n_b, r.folds) == (5, 6, 25)
+    assert r.sentence().startswith("maze vs tiny: balanced accuracy 1.00")
+
+
+def test_two_sample_test__deterministic_given_the_seed(maze_office, tiny_office, scaled):
+    a = [scaled(maze_office, f) for f in (0.5, 1.0, 2.0)] + [tiny_office]
+    b = [scaled(tiny_office, f) for f in (0.5, 1.0, 2.0)] + [maze_office]
+    assert two_sample_test(a, b, seed=1) == two_sample_test(a, b, seed=1)
+
+
+def test_two_sample_test__needs_two_buildings_per_set(maze_office):
+    with pytest.raises(ConfigError, match="at least 2 buildings per set; 'x' has 1"):
+        two_sample_test([maze_office], [maze_office] * 3, names=("x", "y"))

@@ -1,0 +1,149 @@
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from realistic_indoor.cli import build_parser, main
+from realistic_indoor.io import load, save
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+def _subcommands() -> list[str]:
+    parser = build_parser()
+    (sub,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return sorted(sub.choices)
+
+
+def _one_line_error(err: str, *names: str) -> None:
+    """A user error is one line on stderr, naming the file, without a traceback."""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert "Traceback" not in err
+    for name in names:
+        assert name in lines[0]
+
+
+@pytest.fixture
+def plan_json(tiny_office, tmp_path) -> Path:
+    path = tmp_path / "tiny.json"
+    save(tiny_office, path)
+    return path
+
+
+def test_cli__main_help(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert out.startswith("usage: realistic-indoor")
+    for name in _subcommands():
+        assert name in out
+
+
+def test_cli__no_command_prints_help_and_exits_2(capsys):
+    assert main([]) == 2
+    assert "usage: realistic-indoor" in capsys.readouterr().out
+
+
+def test_cli__known_subcommands_registered():
+    assert {"info", "convert", "render"} <= set(_subcommands())
+
+
+@pytest.mark.parametrize("command", _subcommands())
+def test_cli__every_subcommand_has_help(command, capsys):
+    with pytest.raises(SystemExit) as exc:
+        main([command, "--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"usage: realistic-indoor {command}")
+    assert len(out.splitlines()) > 3
+
+
+def test_cli__info_summarises_the_plan(plan_json, capsys):
+    assert main(["info", str(plan_json)]) == 0
+    out = capsys.readouterr().out
+    assert "type: office" in out
+    assert "rooms: 3 (1 corridor, 2 medium)" in out
+    assert "doors: 3 (1 exterior)" in out
+
+
+def test_cli__convert_to_json_and_back(plan_json, tiny_office, tmp_path, capsys):
+    copy, back = tmp_path / "copy.json", tmp_path / "back.json"
+    assert main(["convert", str(plan_json), "-o", str(copy)]) == 0
+    assert main(["convert", str(copy), "-o", str(back)]) == 0
+    assert f"wrote {back}" in capsys.readouterr().out
+    assert load(back) == tiny_office
+
+
+def test_cli__convert_to_ros_map_writes_both_files(plan_json, tmp_path, capsys):
+    assert main(["convert", str(plan_json), "-o", str(tmp_path / "map.yaml"), "--resolution", "0.1"]) == 0
+    out = capsys.readouterr().out
+    assert f"wrote {tmp_path / 'map.pgm'}" in out and f"wrote {tmp_path / 'map.yaml'}" in out
+    assert "resolution: 0.1" in (tmp_path / "map.yaml").read_text()
+
+
+def test_cli__render_png_and_svg(plan_json, tmp_path, capsys):
+    png, svg = tmp_path / "plan.png", tmp_path / "plan.svg"
+    assert main(["render", str(plan_json), "-o", str(png), "--dpi", "50", "--functions"]) == 0
+    assert main(["render", str(plan_json), "-o", str(svg), "--title", "Ground floor"]) == 0
+    assert f"wrote {png}" in capsys.readouterr().out
+    assert png.read_bytes().startswith(PNG_MAGIC)
+    assert "<svg" in svg.read_text(encoding="utf-8")
+
+
+def test_cli__render_dpi_sets_the_picture_size(plan_json, tmp_path):
+    import matplotlib.image as mpimg
+
+    sizes = []
+    for dpi in ("40", "80"):
+        out = tmp_path / f"plan{dpi}.png"
+        assert main(["render", str(plan_json), "-o", str(out), "--dpi", dpi]) == 0
+        sizes.append(mpimg.imread(out).shape[:2])
+    assert sizes[1][0] == pytest.approx(2 * sizes[0][0], abs=1)
+    assert sizes[1][1] == pytest.approx(2 * sizes[0][1], abs=1)
+
+
+def test_cli__render_refuses_a_non_picture_output(plan_json, tmp_path, capsys):
+    assert main(["render", str(plan_json), "-o", str(tmp_path / "plan.yaml")]) == 1
+    _one_line_error(capsys.readouterr().err, "plan.yaml", ".png")
+
+
+@pytest.mark.parametrize("command", ["info", "convert", "render"])
+def test_cli__missing_file_is_one_line_exit_1(command, tmp_path, capsys):
+    missing = tmp_path / "nowhere.json"
+    extra = ["-o", str(tmp_path / "out.png")] if command != "info" else []
+    assert main([command, str(missing), *extra]) == 1
+    _one_line_error(capsys.readouterr().err, str(missing), "no such file")
+
+
+@pytest.mark.parametrize("command", ["info", "convert", "render"])
+def test_cli__malformed_file_is_one_line_exit_1(command, tmp_path, capsys):
+    bad = tmp_path / "broken.json"
+    bad.write_text('{"schema": "realistic-indoor/building", "rooms": [', encoding="utf-8")
+    extra = ["-o", str(tmp_path / "out.png")] if command != "info" else []
+    assert main([command, str(bad), *extra]) == 1
+    _one_line_error(capsys.readouterr().err, str(bad))
+    assert not (tmp_path / "out.png").exists()
+
+
+def test_cli__console_script_exit_codes(plan_json, tmp_path):
+    script = Path(sys.executable).parent / "realistic-indoor"
+    if not script.exists():
+        pytest.skip(f"console script not installed at {script} (pip install -e .)")
+    ok = subprocess.run(
+        [str(script), "render", str(plan_json), "-o", str(tmp_path / "p.png"), "--dpi", "40"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert ok.returncode == 0, ok.stderr
+    assert (tmp_path / "p.png").read_bytes().startswith(PNG_MAGIC)
+    missing = tmp_path / "nowhere.json"
+    bad = subprocess.run([str(script), "info", str(missing)], capture_output=True, text=True, timeout=120)
+    assert bad.returncode == 1
+    _one_line_error(bad.stderr, str(missing))
+    usage = subprocess.run([str(script), "render"], capture_output=True, text=True, timeout=120)
+    assert usage.returncode == 2 and "usage:" in usage.stderr

@@ -1,0 +1,11 @@
+"""The floor-plan XML format of the real plans (``<building>`` / ``<floor>`` / ``<spaces>``).
+
+:func:`read` builds a :class:`~realistic_indoor.building.Building` in metres from a file,
+:func:`write` writes one back (1 px = 1 cm). ``realistic_indoor.io.floorplan_xml`` is the name
+the format registry knows; ``docs/formats.md`` describes the format.
+"""
+
+from realistic_indoor.io.floorplan.reader import read
+from realistic_indoor.io.floorplan.writer import write
+
+__all__ = ["read", "write"]

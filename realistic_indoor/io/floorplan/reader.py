@@ -1,0 +1,273 @@
+"""Read a floor-plan XML file (the format of the shared real plans) into a ``Building``."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections import Counter
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path, PureWindowsPath
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.building import Building, BuildingType, Door, Room, SemanticLabel, parse_label
+from realistic_indoor.building.door import DEFAULT_DOOR_WIDTH_M
+from realistic_indoor.errors import ConfigError, PlanFormatError
+from realistic_indoor.io.floorplan.entrances import infer_entrances as _infer_entrances
+from realistic_indoor.io.floorplan.outline import MAX_SLIVER_FRACTION, OutlineError, repair_outline
+from realistic_indoor.io.floorplan.portals import DoorGeometry, door_between, door_from_copies
+from realistic_indoor.io.floorplan.xmlfile import parse_root, points, read_scale
+from realistic_indoor.io.function_labels import load_label_map, normalise_function, semantic_label_for
+
+__all__ = ["read"]
+
+Point = tuple[float, float]
+
+
+@dataclass
+class _Space:
+    """One ``floor/spaces/space`` element, parsed (coordinates in pixels, y down)."""
+
+    id: str
+    function: str
+    label: SemanticLabel
+    ring: list[Point]
+    portals: list[tuple[str, tuple[str, ...]]] = field(default_factory=list)
+    segments: dict[str, tuple[Point, Point]] = field(default_factory=dict)
+
+
+def read(
+    path: str | Path,
+    label_map: Mapping[str, Any] | str | Path | None = None,
+    *,
+    door_width_m: float = DEFAULT_DOOR_WIDTH_M,
+    infer_entrances: bool = False,
+    max_sliver_fraction: float = MAX_SLIVER_FRACTION,
+) -> Building:
+    """Read a floor-plan XML file.
+
+    Coordinates are scaled to metres with the file's ``<scale>``, y is flipped to grow upwards,
+    and the plan is moved so that its bounding box starts at (0, 0). Rooms come from
+    ``floor/spaces/space`` (id, functional label, ``<bounding_polygon>``); doors from the
+    portals, one per portal segment (its id is the door's id).
+
+    Args:
+        path: The file.
+        label_map: Changes to the functional -> semantic label table (a mapping or a JSON file,
+            see :func:`realistic_indoor.io.function_labels.load_label_map`).
+        door_width_m: Width of a door whose portal segment has no length (m).
+        infer_entrances: Add exterior doors (the files have none): one per ``entrance`` space on
+            the building's outer wall, else one for the largest hall or lobby, else for the
+            largest corridor. Recorded in ``metadata["inferred_entrances"]``.
+        max_sliver_fraction: Largest share of a self-crossing outline's area that may be dropped
+            as slivers when repairing it.
+
+    Returns:
+        The building. ``metadata`` holds ``source`` (the path as given), ``name``,
+        ``building_id``, ``scale_m_per_px``, ``door_geometry`` (how many doors came from a
+        segment, from two jambs, from a point, or were placed), ``repairs`` (every change made
+        to the file's content, if any) and ``groups`` (the file's groups of spaces, if any).
+
+    Raises:
+        PlanFormatError: If the file is missing or malformed, has no usable scale, a space has an
+            unknown functional label, an invalid outline or non-numeric coordinates, or a portal
+            names an unknown space; the message names the file and the element.
+        ConfigError: If ``label_map`` or ``door_width_m`` is invalid.
+    """
+    path = Path(path)
+    if not door_width_m > 0:
+        raise ConfigError(f"door_width_m must be positive, not {door_width_m}")
+    labels = load_label_map(label_map)
+    root = parse_root(path)
+    if root.tag != "building":
+        raise PlanFormatError(
+            path, f"root element is <{root.tag}>, not <building>; World Generator files end in .wg.xml"
+        )
+    rep_px, real_m = read_scale(root, path)
+    repairs: list[dict[str, str]] = []
+    spaces = _read_spaces(root, path, labels, real_m / rep_px, max_sliver_fraction, repairs)
+    to_m = _transform(spaces, rep_px, real_m)
+    rooms = [Room(s.id, s.label, s.function, tuple(map(tuple, to_m(s.ring)))) for s in spaces]
+    doors, sources = _read_doors(spaces, rooms, to_m, path, door_width_m, repairs, _dropped_ids(root, spaces))
+    metadata = _metadata(root, path, real_m / rep_px, sources, repairs)
+    if infer_entrances:
+        extra, note = _infer_entrances(rooms, {d.id for d in doors}, door_width_m)
+        doors += extra
+        metadata["inferred_entrances"] = note
+    return Building(_building_type(root), tuple(rooms), tuple(doors), metadata)
+
+
+def _read_spaces(
+    root: ET.Element,
+    path: Path,
+    labels: Mapping[str, SemanticLabel],
+    m_per_px: float,
+    max_sliver: float,
+    repairs,
+) -> list[_Space]:
+    elements = root.findall("floor/spaces/space")
+    if not elements:
+        raise PlanFormatError(path, "no rooms: the file has no floor/spaces/space element", "floor/spaces")
+    spaces: list[_Space] = []
+    seen: set[str] = set()
+    for i, el in enumerate(elements):
+        sid = el.get("id")
+        if not sid:
+            raise PlanFormatError(path, "has no id attribute", f"floor/spaces/space[{i + 1}]")
+        where = f'space id="{sid}"'
+        if sid in seen:
+            raise PlanFormatError(path, "another space has the same id; space ids must be unique", where)
+        seen.add(sid)
+        space = _read_space(el, sid, path, labels)
+        try:
+            space.ring, note = repair_outline(
+                points(el.find("bounding_polygon"), path, where), m_per_px, max_sliver
+            )
+        except OutlineError as e:
+            if e.degenerate and not space.portals:
+                repairs.append(
+                    {"element": where, "problem": str(e), "action": "dropped the space (no portals)"}
+                )
+                continue
+            raise PlanFormatError(path, f"invalid <bounding_polygon>: {e}", where) from None
+        if note:
+            repairs.append({"element": where, "problem": "invalid <bounding_polygon>", "action": note})
+        spaces.append(space)
+    return spaces
+
+
+def _read_space(el: ET.Element, sid: str, path: Path, labels: Mapping[str, SemanticLabel]) -> _Space:
+    where = f'space id="{sid}"'
+    text = el.findtext("labels/label")
+    if not text or not text.strip():
+        raise PlanFormatError(path, "has no <labels><label>: add the room's functional label", where)
+    function = normalise_function(text)
+    explicit = el.findtext("labels/semantic_label")
+    try:
+        label = parse_label(explicit) if explicit else semantic_label_for(function, labels)
+    except ConfigError as e:
+        raise PlanFormatError(path, str(e), where) from None
+    space = _Space(sid, function, label, [])
+    for ls in el.findall("space_representation/linesegment"):
+        seg_id = ls.get("id")
+        pts = points(ls, path, f'{where} linesegment id="{seg_id}"')
+        if seg_id and len(pts) >= 2:
+            space.segments[seg_id] = (pts[0], pts[1])
+    for k, portal in enumerate(el.findall("portals/portal")):
+        seg_id = (portal.findtext("linesegment") or "").strip()
+        if not seg_id:
+            raise PlanFormatError(path, "has no <linesegment> naming its segment", f"{where} portal {k + 1}")
+        targets = tuple(t.text.strip() for t in portal.findall("target/id") if t.text and t.text.strip())
+        space.portals.append((seg_id, targets))
+    return space
+
+
+def _transform(spaces: list[_Space], rep_px: float, real_m: float):
+    """Pixels (y down) -> metres (y up), the plan's bounding box starting at (0, 0)."""
+    allpts = np.array([p for s in spaces for p in s.ring], dtype=float)
+    xs = allpts[:, 0] * real_m / rep_px
+    ys = -allpts[:, 1] * real_m / rep_px
+    x0, y0 = xs.min(), ys.min()
+
+    def to_m(pts) -> np.ndarray:
+        a = np.asarray(pts, dtype=float).reshape(-1, 2)
+        return np.column_stack([a[:, 0] * real_m / rep_px - x0, -a[:, 1] * real_m / rep_px - y0])
+
+    return to_m
+
+
+def _dropped_ids(root: ET.Element, spaces: list[_Space]) -> set[str]:
+    kept = {s.id for s in spaces}
+    return {el.get("id", "") for el in root.findall("floor/spaces/space")} - kept
+
+
+def _read_doors(spaces, rooms, to_m, path, width_m, repairs, dropped) -> tuple[list[Door], Counter]:
+    targets = _portal_targets(spaces, path)
+    copies: dict[str, list[tuple[Point, Point]]] = {}
+    for s in spaces:
+        for seg_id, (p, q) in s.segments.items():
+            if seg_id in targets:
+                copies.setdefault(seg_id, []).append(tuple(map(tuple, to_m([p, q]))))
+    outline = {r.id: np.asarray(r.outline) for r in rooms}
+    doors, sources = [], Counter()
+    for seg_id, ids in targets.items():
+        where = f'portal linesegment="{seg_id}"'
+        if any(t in dropped for t in ids):
+            repairs.append(
+                {"element": where, "problem": "joins a dropped space", "action": "dropped the door"}
+            )
+            continue
+        unknown = [t for t in ids if t not in outline]
+        if unknown:
+            raise PlanFormatError(path, f"target id {unknown[0]!r} names no space of floor/spaces", where)
+        geo = _door_geometry(seg_id, ids, copies, outline, width_m, path, repairs)
+        sources[geo.source] += 1
+        doors.append(
+            Door(seg_id, ids[0], ids[1] if len(ids) > 1 else None, geo.x, geo.y, geo.width_m, geo.angle_rad)
+        )
+    return doors, sources
+
+
+def _portal_targets(spaces: list[_Space], path: Path) -> dict[str, tuple[str, ...]]:
+    """Distinct target ids of each portal segment, in order of first appearance."""
+    out: dict[str, tuple[str, ...]] = {}
+    for s in spaces:
+        for seg_id, targets in s.portals:
+            where = f'space id="{s.id}" portal linesegment="{seg_id}"'
+            ids = tuple(dict.fromkeys(targets))
+            if not 1 <= len(ids) <= 2:
+                raise PlanFormatError(path, f"<target> must name 1 or 2 spaces, not {len(ids)}", where)
+            if seg_id in out and set(out[seg_id]) != set(ids):
+                raise PlanFormatError(
+                    path, f"targets {list(ids)} differ from {list(out[seg_id])} given by another space", where
+                )
+            out.setdefault(seg_id, ids)
+    return out
+
+
+def _door_geometry(seg_id, ids, copies, outline, width_m, path, repairs) -> DoorGeometry:
+    where = f'portal linesegment="{seg_id}"'
+    if seg_id in copies:
+        return door_from_copies(copies[seg_id], [outline[t] for t in ids], width_m)
+    if len(ids) == 1:
+        raise PlanFormatError(path, "names no <linesegment> of any space; an exterior door needs one", where)
+    geo = door_between(outline[ids[0]], outline[ids[1]], width_m)
+    repairs.append(
+        {
+            "element": where,
+            "problem": "names no <linesegment> of any space",
+            "action": f"placed the door on the wall the two spaces share, at ({geo.x:.2f}, {geo.y:.2f}) m",
+        }
+    )
+    return geo
+
+
+def _building_type(root: ET.Element) -> BuildingType:
+    text = (root.findtext("building_type/main_type") or "").strip().lower()
+    return BuildingType(text) if text in {t.value for t in BuildingType} else BuildingType.UNKNOWN
+
+
+def _metadata(root: ET.Element, path: Path, m_per_px: float, sources: Counter, repairs) -> dict[str, Any]:
+    name = (root.findtext("name") or "").strip()
+    meta: dict[str, Any] = {
+        "source": str(path),
+        "name": PureWindowsPath(name).name if name else path.stem,
+        "scale_m_per_px": m_per_px,
+        "door_geometry": {k: sources.get(k, 0) for k in ("segment", "jambs", "point", "placed")},
+    }
+    if root.get("id"):
+        meta["building_id"] = root.get("id")
+    if repairs:
+        meta["repairs"] = repairs
+    groups = [
+        {
+            "name": g.findtext("name") or "",
+            "type": g.findtext("type") or "",
+            "rooms": [s.text for s in g.findall("space")],
+        }
+        for g in root.iter("group_features")
+    ]
+    if groups:
+        meta["groups"] = groups
+    return meta

@@ -1,0 +1,113 @@
+"""A 2D laser scanner: a fan of beams cast on the building's raster, with Gaussian range noise."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+
+from realistic_indoor.sim._checks import require_int, require_positive, require_range
+from realistic_indoor.sim.raster import WALL
+from realistic_indoor.sim.raycast import Raycaster, RayHits
+
+__all__ = ["Lidar", "LidarConfig", "Scan"]
+
+
+@dataclass(frozen=True)
+class LidarConfig:
+    """Laser scanner settings.
+
+    Attributes:
+        fov_rad: Field of view (rad), in (0, 2 pi]; beams are spread evenly from ``-fov/2`` to
+            ``+fov/2`` about the heading, both ends included (a full circle has no duplicate).
+        n_beams: Number of beams, >= 1. The default 109 gives a beam every 2.5 degrees over 270
+            degrees and one straight ahead.
+        max_range_m: Readings stop at this range (m), > 0; a beam with no return reads it.
+        noise_std_m: Standard deviation of the Gaussian noise added to returned ranges (m), >= 0.
+    """
+
+    fov_rad: float = math.radians(270.0)
+    n_beams: int = 109
+    max_range_m: float = 10.0
+    noise_std_m: float = 0.01
+
+    def __post_init__(self) -> None:
+        require_range("LidarConfig", "fov_rad", self.fov_rad, 0.0, 2 * math.pi, "rad")
+        require_int("LidarConfig", "n_beams", self.n_beams, 1)
+        require_positive("LidarConfig", "max_range_m", self.max_range_m, "m")
+        require_positive("LidarConfig", "noise_std_m", self.noise_std_m, "m", allow_zero=True)
+
+
+class Scan(NamedTuple):
+    """One laser scan.
+
+    Attributes:
+        pose: ``(x, y, theta)`` of the scanner when the scan was taken (m, m, rad).
+        ranges_m: ``(n_beams,)`` float32 readings (m) in ``[0, max_range_m]``, with noise;
+            ``max_range_m`` for a beam with no return (nothing within range, or a beam that left
+            the building through an exterior door: the outside returns nothing).
+        true: Noise-free distances and what each beam met (:class:`RayHits`); the beam ends
+            where it entered a wall or left the building. Mapping uses these.
+    """
+
+    pose: tuple[float, float, float]
+    ranges_m: np.ndarray
+    true: RayHits
+
+    @property
+    def returned(self) -> np.ndarray:
+        """Which beams returned from a wall (bool, ``(n_beams,)``)."""
+        return self.true.kind == WALL
+
+
+class Lidar:
+    """A laser scanner: precomputes its beam directions, then casts them from any pose.
+
+    Args:
+        config: The scanner's settings.
+
+    Attributes:
+        config: The scanner's settings.
+        offsets_rad: ``(n_beams,)`` beam directions relative to the heading (rad, increasing,
+            counter-clockwise).
+    """
+
+    def __init__(self, config: LidarConfig | None = None) -> None:
+        self.config = config or LidarConfig()
+        c = self.config
+        full_circle = math.isclose(c.fov_rad, 2 * math.pi)
+        if c.n_beams == 1:
+            offsets = np.zeros(1)
+        else:
+            offsets = np.linspace(-c.fov_rad / 2, c.fov_rad / 2, c.n_beams, endpoint=not full_circle)
+        offsets.setflags(write=False)
+        self.offsets_rad = offsets
+        self._cos = np.cos(offsets)
+        self._sin = np.sin(offsets)
+
+    def scan(
+        self, raycaster: Raycaster, pose: tuple[float, float, float], rng: np.random.Generator | None = None
+    ) -> Scan:
+        """Take a scan from ``pose``.
+
+        Args:
+            raycaster: The building's raycaster.
+            pose: ``(x, y, theta)`` of the scanner (m, m, rad).
+            rng: Source of the range noise; no noise when ``None`` or ``noise_std_m`` is 0.
+
+        Returns:
+            The scan (new arrays). Cost: about 0.1 microsecond per beam plus a few microseconds.
+        """
+        c = self.config
+        n = c.n_beams
+        true = RayHits(np.empty(n, np.float32), np.empty(n, np.uint8))
+        x, y, theta = pose
+        raycaster.cast_into(x, y, theta, self._cos, self._sin, c.max_range_m, true)
+        ranges = np.where(true.kind == WALL, true.range_m, np.float32(c.max_range_m))
+        if rng is not None and c.noise_std_m > 0:
+            returned = true.kind == WALL
+            noise = rng.normal(0.0, c.noise_std_m, n)
+            ranges = np.where(returned, np.clip(ranges + noise, 0.0, c.max_range_m), ranges)
+        return Scan((float(x), float(y), float(theta)), ranges.astype(np.float32, copy=False), true)

@@ -1,0 +1,248 @@
+"""Raycasting on an occupancy raster: ray marching on a distance field, exact near obstacles."""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+from scipy.ndimage import distance_transform_edt
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, OccupancyRaster
+
+__all__ = ["RayHits", "Raycaster", "free_distance_cells"]
+
+_WALL_CODE, _OUTSIDE_CODE = 254, 255
+"""Codes of obstacle cells in the skip field; free cells hold their safe step, 0 to 253 cells."""
+_SAFETY = 1.5
+"""Margin (cells) taken off the distance field: a point anywhere in a cell lies within
+sqrt(2)/2 of its centre, and an obstacle cell reaches sqrt(2)/2 beyond its own centre."""
+_BOUNDARY_NUDGE = 1e-6
+"""How far past a cell boundary (cells) the exact walk steps, so it lands in the next cell."""
+_BIG = 1e30
+
+
+class RayHits(NamedTuple):
+    """What rays met.
+
+    Attributes:
+        range_m: ``(N,)`` float32 distance (m) from the origin to the first non-free cell on
+            the ray, or the maximum range when the ray met nothing closer.
+        kind: ``(N,)`` uint8: :data:`~realistic_indoor.sim.raster.WALL` when the ray hit a wall,
+            :data:`~realistic_indoor.sim.raster.OUTSIDE` when it left the building (through an
+            exterior door, or off the grid), :data:`~realistic_indoor.sim.raster.FREE` when it
+            met nothing within the maximum range.
+    """
+
+    range_m: np.ndarray
+    kind: np.ndarray
+
+
+class Raycaster:
+    """Casts rays on a raster of one building; build one per building and reuse it.
+
+    Rays march on a distance field of the obstacle (wall and outside) cells, as range_libc's
+    "ray marching" method does: far from obstacles a ray jumps by its (safe) distance to the
+    nearest one; within two cells of an obstacle it walks exactly cell by cell, so a ray stops
+    at the exact point where it enters the first wall or outside cell. Rays never slip between
+    diagonal wall cells (raster walls are 4-connected).
+
+    Args:
+        raster: The building's occupancy raster.
+        distance_cells: The raster's distance transform (distance from each free cell's centre
+            to the nearest non-free cell's centre, in cells) if already computed; computed
+            here otherwise (about 30 ms for a 2,000 m2 office at 0.05 m).
+
+    Attributes:
+        raster: The raster rays are cast on.
+    """
+
+    def __init__(self, raster: OccupancyRaster, distance_cells: np.ndarray | None = None) -> None:
+        self.raster = raster
+        if distance_cells is None:
+            distance_cells = free_distance_cells(raster)
+        self._skip = _skip_field(raster.grid, distance_cells)
+        self._scale = 1.0 / raster.resolution_m
+        self._x0, self._y0 = raster.origin
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the raycaster's skip field (bytes): one byte per cell."""
+        return int(self._skip.nbytes)
+
+    def cast(self, origin: tuple[float, float], angles_rad: np.ndarray, max_range_m: float) -> RayHits:
+        """Cast rays from one point.
+
+        Args:
+            origin: ``(x, y)`` start of every ray (m).
+            angles_rad: ``(N,)`` world directions of the rays (rad, counter-clockwise from +x).
+            max_range_m: Rays stop after this distance (m), > 0.
+
+        Returns:
+            Ranges and what was hit; cost about 0.1 microsecond per ray.
+
+        Raises:
+            ConfigError: If ``max_range_m`` is not positive.
+        """
+        angles = np.asarray(angles_rad, dtype=np.float64).ravel()
+        hits = RayHits(np.empty(len(angles), np.float32), np.empty(len(angles), np.uint8))
+        self.cast_into(origin[0], origin[1], 0.0, np.cos(angles), np.sin(angles), max_range_m, hits)
+        return hits
+
+    def cast_into(
+        self,
+        x: float,
+        y: float,
+        heading_rad: float,
+        cos_offsets: np.ndarray,
+        sin_offsets: np.ndarray,
+        max_range_m: float,
+        out: RayHits,
+    ) -> None:
+        """Cast a fan of rays into preallocated arrays (the allocation-free path of sensors).
+
+        Ray ``i`` points at ``heading_rad`` plus the offset whose cosine and sine are
+        ``cos_offsets[i]`` and ``sin_offsets[i]``.
+
+        Args:
+            x: Origin of the rays (m).
+            y: Origin of the rays (m).
+            heading_rad: Direction the offsets are relative to (rad).
+            cos_offsets: ``(N,)`` float64 cosines of the ray offsets.
+            sin_offsets: ``(N,)`` float64 sines of the ray offsets.
+            max_range_m: Rays stop after this distance (m), > 0.
+            out: ``RayHits`` of ``(N,)`` float32 and uint8 arrays, overwritten.
+
+        Raises:
+            ConfigError: If ``max_range_m`` is not positive.
+        """
+        if not max_range_m > 0:
+            raise ConfigError(f"max_range_m must be > 0 m, got {max_range_m!r}")
+        _cast_fan(
+            self._skip,
+            (x - self._x0) * self._scale,
+            (y - self._y0) * self._scale,
+            math.cos(heading_rad),
+            math.sin(heading_rad),
+            cos_offsets,
+            sin_offsets,
+            max_range_m * self._scale,
+            self.raster.resolution_m,
+            out.range_m,
+            out.kind,
+        )
+
+    def visible(self, origin: tuple[float, float], targets: np.ndarray) -> np.ndarray:
+        """Whether each target point is in line of sight of ``origin``.
+
+        A target is visible when no wall or outside cell lies on the segment between the two
+        points (the target's own cell excluded).
+
+        Args:
+            origin: ``(x, y)`` viewpoint (m).
+            targets: ``(M, 2)`` points (m).
+
+        Returns:
+            ``(M,)`` bool array.
+        """
+        t = np.asarray(targets, dtype=np.float64).reshape(-1, 2)
+        out = np.empty(len(t), dtype=np.bool_)
+        _line_of_sight(
+            self._skip,
+            (origin[0] - self._x0) * self._scale,
+            (origin[1] - self._y0) * self._scale,
+            (t[:, 0] - self._x0) * self._scale,
+            (t[:, 1] - self._y0) * self._scale,
+            out,
+        )
+        return out
+
+
+def free_distance_cells(raster: OccupancyRaster) -> np.ndarray:
+    """Distance (in cells) from each free cell's centre to the nearest wall or outside cell's.
+
+    Zero on non-free cells; float64 ``(H, W)``, as ``scipy.ndimage.distance_transform_edt``.
+    """
+    return distance_transform_edt(raster.grid == FREE)
+
+
+def _skip_field(grid: np.ndarray, dist: np.ndarray) -> np.ndarray:
+    """Safe ray-marching step per cell, in whole cells (uint8), or the code of an obstacle.
+
+    A free cell holds how far a ray starting anywhere in it may jump without entering an
+    obstacle cell: its distance to the nearest obstacle cell minus :data:`_SAFETY`, rounded
+    down (at most 253 cells). One byte per cell keeps the field in cache, and one read per
+    step tells the marching loop both what a cell is and how far it may jump.
+    """
+    skip = np.clip(np.floor(dist - _SAFETY), 0, _WALL_CODE - 1).astype(np.uint8)
+    skip[grid == WALL] = _WALL_CODE
+    skip[grid == OUTSIDE] = _OUTSIDE_CODE
+    skip.setflags(write=False)
+    return skip
+
+
+@njit(cache=True, nogil=True, fastmath=True, inline="always")
+def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
+    """March one ray (cell units); return ``(t, kind)`` at the first non-free cell."""
+    h, w = skip.shape
+    inv_dx = 1.0 / dx if dx != 0.0 else _BIG
+    inv_dy = 1.0 / dy if dy != 0.0 else _BIG
+    t = 0.0
+    while t < t_max:
+        x = px + t * dx
+        y = py + t * dy
+        c = math.floor(x)
+        r = math.floor(y)
+        if r < 0 or r >= h or c < 0 or c >= w:
+            return t, OUTSIDE
+        s = skip[r, c]
+        if s >= _WALL_CODE:
+            return t, WALL if s == _WALL_CODE else OUTSIDE
+        if s > 0:
+            t += s
+        else:
+            if dx > 0.0:
+                tx = (c + 1.0 - x) * inv_dx
+            elif dx < 0.0:
+                tx = (c - x) * inv_dx
+            else:
+                tx = _BIG
+            if dy > 0.0:
+                ty = (r + 1.0 - y) * inv_dy
+            elif dy < 0.0:
+                ty = (r - y) * inv_dy
+            else:
+                ty = _BIG
+            t += min(tx, ty) + _BOUNDARY_NUDGE
+    return t_max, FREE
+
+
+@njit(cache=True, nogil=True, fastmath=True)
+def _cast_fan(
+    skip, px, py, cos_h, sin_h, cos_off, sin_off, t_max, res, out_range, out_kind
+):  # pragma: no cover
+    for i in range(cos_off.shape[0]):
+        dx = cos_h * cos_off[i] - sin_h * sin_off[i]
+        dy = sin_h * cos_off[i] + cos_h * sin_off[i]
+        t, kind = _march(skip, px, py, dx, dy, t_max)
+        out_range[i] = min(t, t_max) * res
+        out_kind[i] = kind
+
+
+@njit(cache=True, nogil=True, fastmath=True)
+def _line_of_sight(skip, px, py, tx, ty, out):  # pragma: no cover - compiled
+    for i in range(tx.shape[0]):
+        ex = tx[i] - px
+        ey = ty[i] - py
+        length = math.sqrt(ex * ex + ey * ey)
+        if length == 0.0:
+            out[i] = True
+            continue
+        t, kind = _march(skip, px, py, ex / length, ey / length, length)
+        end_r = math.floor(ty[i])
+        end_c = math.floor(tx[i])
+        hit_r = math.floor(py + t * ey / length)
+        hit_c = math.floor(px + t * ex / length)
+        out[i] = kind == FREE or (hit_r == end_r and hit_c == end_c)

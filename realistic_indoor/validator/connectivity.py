@@ -12,6 +12,9 @@ Definitions (doors are counted as the plan gives them; an exterior door leads to
 - *ordinary rooms*: small, medium and big rooms (not corridors or halls).
 - an ordinary room is *connected only to corridors* when it has at least one door and every
   door (exterior ones included) leads to a corridor.
+- the same two with halls counted as corridors (*circulation*: corridors and halls) are
+  reported beside them: in the shared real offices 80% of offices touch a corridor and 97%
+  touch a corridor or a hall (the paper: 98%).
 - a *dead-end corridor* has exactly one doorway.
 - a corridor is *connected only to corridors* when it has a door and all its doors lead to
   corridors.
@@ -36,7 +39,7 @@ import numpy as np
 from realistic_indoor.building.labels import ROOM_LABELS, BuildingType, SemanticLabel, parse_building_type
 
 if TYPE_CHECKING:
-    from collections.abc import Iterable, Sequence
+    from collections.abc import Collection, Iterable, Sequence
 
     from realistic_indoor.building.building import Building
 
@@ -99,21 +102,25 @@ def core_rooms(b: Building) -> list[str]:
     return [r.id for r in b.rooms if is_core_function(r.function, b.building_type)]
 
 
-def rooms_touching_corridor(b: Building, room_ids: Iterable[str]) -> list[str]:
-    """The rooms among ``room_ids`` with at least one door to a corridor."""
-    return [rid for rid in room_ids if SemanticLabel.CORRIDOR in _neighbour_labels(b, rid)]
+def rooms_touching_corridor(
+    b: Building, room_ids: Iterable[str], via: Collection[SemanticLabel] = (SemanticLabel.CORRIDOR,)
+) -> list[str]:
+    """The rooms among ``room_ids`` with at least one door to a corridor (or to a room of ``via``)."""
+    return [rid for rid in room_ids if any(lab in via for lab in _neighbour_labels(b, rid))]
 
 
 def _ordinary_rooms(b: Building) -> list[str]:
     return [r.id for r in b.rooms if r.label in ROOM_LABELS]
 
 
-def rooms_only_to_corridors(b: Building) -> list[str]:
-    """Ordinary rooms with at least one door, every door leading to a corridor."""
+def rooms_only_to_corridors(
+    b: Building, via: Collection[SemanticLabel] = (SemanticLabel.CORRIDOR,)
+) -> list[str]:
+    """Ordinary rooms with at least one door, every door leading to a corridor (or a room of ``via``)."""
     out = []
     for rid in _ordinary_rooms(b):
         labels = _neighbour_labels(b, rid)
-        if labels and all(lab is SemanticLabel.CORRIDOR for lab in labels):
+        if labels and all(lab in via for lab in labels):
             out.append(rid)
     return out
 
@@ -220,9 +227,21 @@ CONNECTIVITY_METRICS: tuple[ConnectivityMetric, ...] = (
         "core_touching_corridor_pct", "core rooms touching a corridor", "of core rooms touch a corridor", "%"
     ),
     ConnectivityMetric(
+        "core_touching_circulation_pct",
+        "core rooms touching a corridor or hall",
+        "of core rooms touch a corridor or a hall",
+        "%",
+    ),
+    ConnectivityMetric(
         "only_to_corridors_pct",
         "rooms connected only to corridors",
         "of small/medium/big rooms connect only to corridors",
+        "%",
+    ),
+    ConnectivityMetric(
+        "only_to_circulation_pct",
+        "rooms connected only to corridors/halls",
+        "of small/medium/big rooms connect only to corridors and halls",
         "%",
     ),
     ConnectivityMetric(
@@ -271,8 +290,10 @@ class Connectivity:
         buildings: Number of buildings.
         core_rooms: Rooms with the type's core function.
         core_touching_corridor: Core rooms with a door to a corridor.
+        core_touching_circulation: Core rooms with a door to a corridor or a hall.
         ordinary_rooms: Small, medium and big rooms.
         only_to_corridors: Ordinary rooms all of whose doors lead to corridors.
+        only_to_circulation: Ordinary rooms all of whose doors lead to corridors or halls.
         indirect_rooms: Ordinary rooms with no door to a corridor, hall or outside.
         mazes: Room mazes.
         maze_rooms: Rooms in room mazes.
@@ -288,8 +309,10 @@ class Connectivity:
     buildings: int
     core_rooms: int
     core_touching_corridor: int
+    core_touching_circulation: int
     ordinary_rooms: int
     only_to_corridors: int
+    only_to_circulation: int
     indirect_rooms: int
     mazes: int
     maze_rooms: int
@@ -305,6 +328,16 @@ class Connectivity:
     def core_touching_corridor_pct(self) -> float:
         """Share of core rooms that touch a corridor, % (NaN without core rooms)."""
         return _pct(self.core_touching_corridor, self.core_rooms)
+
+    @property
+    def core_touching_circulation_pct(self) -> float:
+        """Share of core rooms that touch a corridor or a hall, %."""
+        return _pct(self.core_touching_circulation, self.core_rooms)
+
+    @property
+    def only_to_circulation_pct(self) -> float:
+        """Share of ordinary rooms connected only to corridors and halls, %."""
+        return _pct(self.only_to_circulation, self.ordinary_rooms)
 
     @property
     def only_to_corridors_pct(self) -> float:
@@ -362,8 +395,10 @@ def connectivity(b: Building) -> Connectivity:
         buildings=1,
         core_rooms=len(core),
         core_touching_corridor=len(rooms_touching_corridor(b, core)),
+        core_touching_circulation=len(rooms_touching_corridor(b, core, _CIRCULATION)),
         ordinary_rooms=len(_ordinary_rooms(b)),
         only_to_corridors=len(rooms_only_to_corridors(b)),
+        only_to_circulation=len(rooms_only_to_corridors(b, _CIRCULATION)),
         indirect_rooms=len(indirect_rooms(b)),
         mazes=len(mazes),
         maze_rooms=sum(len(m) for m in mazes),

@@ -28,14 +28,14 @@ if TYPE_CHECKING:
 
 __all__ = ["FEATURE_NAMES", "TwoSampleResult", "building_features", "feature_matrix", "two_sample_test"]
 
-_SHARE_METRICS = tuple(m.key for m in CONNECTIVITY_METRICS if m.unit == "%")
+_SHARE_METRICS = tuple(m for m in CONNECTIVITY_METRICS if m.unit == "%")
 
 FEATURE_NAMES: tuple[str, ...] = (
     *(f"{lab.value} share" for lab in SemanticLabel),
     *(f"{lab.value} doorways" for lab in SemanticLabel),
     *(f"{lab.value} log area" for lab in SemanticLabel),
     *(f"{lab.value} axes ratio" for lab in SemanticLabel),
-    *_SHARE_METRICS,
+    *(m.title for m in _SHARE_METRICS),
 )
 """Names of the building-level features, in vector order. Sizes of whole buildings (room count,
 floor area, path lengths) are left out: they say how big a building is, not how it is built."""
@@ -57,7 +57,7 @@ def building_features(b: Building) -> np.ndarray:
     ]
     values += [table[lab]["axes_ratio_mean"] for lab in SemanticLabel]
     conn = connectivity(b).metrics()
-    values += [conn[k] / 100 for k in _SHARE_METRICS]
+    values += [conn[m.key] / 100 for m in _SHARE_METRICS]
     return np.nan_to_num(np.asarray(values, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
 
 

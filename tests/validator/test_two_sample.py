@@ -11,7 +11,7 @@ def test_building_features__one_value_per_name_and_no_nan(maze_office):
     assert named["corridor share"] == pytest.approx(0.25)
     assert named["corridor doorways"] == pytest.approx(3.5)
     assert named["hall doorways"] == 0.0
-    assert named["core_touching_corridor_pct"] == pytest.approx(0.6)
+    assert named["core rooms touching a corridor"] == pytest.approx(0.6)
 
 
 def test_two_sample_test__identical_sets_are_indistinguishable(maze_office):

@@ -19,6 +19,7 @@ from realistic_indoor.validator.tables import label_table
 if TYPE_CHECKING:
     from collections.abc import Sequence
 
+    from realistic_indoor.building.building import Building
     from realistic_indoor.validator.connectivity import Connectivity
     from realistic_indoor.validator.two_sample import TwoSampleResult
 
@@ -143,8 +144,16 @@ def prepare_set(
         kept.append(b)
         sources.append(src)
     if not kept:
-        raise ConfigError(f"set {plans.name!r}: no plan left to measure ({len(skipped)} left out)")
+        src, why = skipped[0]
+        raise ConfigError(
+            f"set {plans.name!r}: no plan left to measure; all {len(skipped)} left out, e.g. {src}: {why}"
+        )
     return PlanSet(plans.name, tuple(kept), tuple(sources)), tuple(inferred), tuple(skipped)
+
+
+def _own_type(b: Building, default: BuildingType) -> BuildingType:
+    """The type a plan declares, or ``default`` for a plan of unknown type."""
+    return default if b.building_type is BuildingType.UNKNOWN else b.building_type
 
 
 def _report(
@@ -155,7 +164,7 @@ def _report(
     flags = tuple(
         f
         for b, src in zip(prepared.buildings, prepared.sources, strict=True)
-        if (f := scale_check(b, btype, source=src)) is not None
+        if (f := scale_check(b, _own_type(b, btype), source=src)) is not None
     )
     score = score_statistics(table, conn, reference, cfg)
     return SetReport(prepared, table, conn, score, flags, inferred, skipped)

@@ -115,3 +115,15 @@ def _scaled(b: Building, factor: float) -> Building:
 def scaled():
     """A function that gives a plan with every length multiplied by a factor."""
     return _scaled
+
+
+@pytest.fixture
+def plan_folders(tmp_path, maze_office, tiny_office, scaled):
+    """Two folders of JSON plans: ``mazes/`` (4 maze offices) and ``tidy/`` (4 tiny offices), plus a README."""
+    from realistic_indoor.io import save
+
+    for name, b in (("mazes", maze_office), ("tidy", tiny_office)):
+        for i, f in enumerate((0.9, 1.0, 1.1, 1.2)):
+            save(scaled(b, f), tmp_path / name / f"{name}_{i}.json")
+    (tmp_path / "mazes" / "README.md").write_text("not a plan\n")
+    return tmp_path

@@ -109,7 +109,7 @@ def read(
         PlanFormatError: If the file is missing or malformed, a module is unknown, a room leaves
             the world or overlaps another, or a door touches no room.
     """
-    path = Path(path)
+    source, path = str(path), Path(path)
     sizes = _module_table(modules, path)
     root = parse_root(path)
     if root.tag != "world":
@@ -119,7 +119,7 @@ def read(
     rooms, hallway = _read_rooms(root, path, sizes, grid, grid_m)
     rooms, openings = _merge_hallways(hallway, grid, rooms, grid_m)
     doors, skipped = _read_doors(root, path, grid, rooms, grid_m, door_width_m)
-    meta: dict[str, Any] = {"source": str(path), "name": root.get("name") or path.stem, "grid_m": grid_m}
+    meta: dict[str, Any] = {"source": source, "name": root.get("name") or path.stem, "grid_m": grid_m}
     if skipped:
         meta["skipped_doors"] = skipped
     return Building(building_type, tuple(rooms), tuple(openings + doors), meta)

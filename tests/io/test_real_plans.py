@@ -85,6 +85,17 @@ def test_real_plans__repairs_are_reported(real_plans_dir):
     assert [r["element"] for r in dropped] == ['space id="d4025b4c-2183-40a1-aeb6-54acb4d21162"']
 
 
+@pytest.mark.parametrize("name", ALL_PLANS)
+def test_real_plans__every_plan_gets_an_entrance_when_asked(real_plans_dir, name):
+    from realistic_indoor.io.floorplan_xml import read
+
+    b = read(real_plans_dir / name, infer_entrances=True)
+    assert b.entrances
+    assert {d.id for d in b.entrances} == {e["door"] for e in b.metadata["inferred_entrances"]["doors"]}
+    found = b.validate(wall_tolerance_m=0.3)
+    assert not [f for f in found if f.code in ("door_off_wall", "no_entrance")]
+
+
 def test_real_plans__inferred_entrances_are_on_entrance_outer_walls(real_plans_dir):
     from realistic_indoor.io.floorplan_xml import read
 

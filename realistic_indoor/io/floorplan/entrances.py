@@ -20,8 +20,9 @@ def infer_entrances(
 
     One door for each space whose function is ``entrance`` and which has a wall on the building's
     outer boundary; when there is none, one door for the largest hall or lobby on the boundary,
-    then for the largest corridor. Each door sits in the middle of the room's longest stretch of
-    outer wall.
+    then for the largest corridor, then for the largest room (an upper floor, whose way in is a
+    staircase inside, still gets a door to the outside). Each door sits in the middle of the
+    room's longest stretch of outer wall.
 
     Args:
         rooms: The plan's rooms (metres).
@@ -39,6 +40,7 @@ def infer_entrances(
         ("entrance spaces", [r for r in rooms if r.function == "entrance"], False),
         ("largest hall or lobby", [r for r in rooms if r.label is SemanticLabel.HALL], True),
         ("largest corridor", [r for r in rooms if r.label is SemanticLabel.CORRIDOR], True),
+        ("largest room", list(rooms), True),
     )
     for rule, candidates, only_largest in tiers:
         placed = []
@@ -51,7 +53,7 @@ def infer_entrances(
                     break
         if placed:
             return placed, {"rule": rule, "doors": [{"door": d.id, "room": d.room_a} for d in placed]}
-    return [], {"rule": "none", "doors": [], "note": "no entrance, hall or corridor has an outer wall"}
+    return [], {"rule": "none", "doors": [], "note": "no room has an outer wall as wide as a door"}
 
 
 def _outer_boundary(rooms: list[Room]):

@@ -59,7 +59,8 @@ def read(
         door_width_m: Width of a door whose portal segment has no length (m).
         infer_entrances: Add exterior doors (the files have none): one per ``entrance`` space on
             the building's outer wall, else one for the largest hall or lobby, else for the
-            largest corridor. Recorded in ``metadata["inferred_entrances"]``.
+            largest corridor, else for the largest room. Recorded in
+            ``metadata["inferred_entrances"]``.
         max_sliver_fraction: Largest share of a self-crossing outline's area that may be dropped
             as slivers when repairing it.
 
@@ -75,7 +76,7 @@ def read(
             names an unknown space; the message names the file and the element.
         ConfigError: If ``label_map`` or ``door_width_m`` is invalid.
     """
-    path = Path(path)
+    source, path = str(path), Path(path)
     if not door_width_m > 0:
         raise ConfigError(f"door_width_m must be positive, not {door_width_m}")
     labels = load_label_map(label_map)
@@ -90,7 +91,7 @@ def read(
     to_m = _transform(spaces, rep_px, real_m)
     rooms = [Room(s.id, s.label, s.function, tuple(map(tuple, to_m(s.ring)))) for s in spaces]
     doors, sources = _read_doors(spaces, rooms, to_m, path, door_width_m, repairs, _dropped_ids(root, spaces))
-    metadata = _metadata(root, path, real_m / rep_px, sources, repairs)
+    metadata = _metadata(root, source, path, real_m / rep_px, sources, repairs)
     if infer_entrances:
         extra, note = _infer_entrances(rooms, {d.id for d in doors}, door_width_m)
         doors += extra
@@ -248,10 +249,12 @@ def _building_type(root: ET.Element) -> BuildingType:
     return BuildingType(text) if text in {t.value for t in BuildingType} else BuildingType.UNKNOWN
 
 
-def _metadata(root: ET.Element, path: Path, m_per_px: float, sources: Counter, repairs) -> dict[str, Any]:
+def _metadata(
+    root: ET.Element, source: str, path: Path, m_per_px: float, sources: Counter, repairs
+) -> dict[str, Any]:
     name = (root.findtext("name") or "").strip()
     meta: dict[str, Any] = {
-        "source": str(path),
+        "source": source,
         "name": PureWindowsPath(name).name if name else path.stem,
         "scale_m_per_px": m_per_px,
         "door_geometry": {k: sources.get(k, 0) for k in ("segment", "jambs", "point", "placed")},

@@ -56,7 +56,7 @@ def nearest_edge_angle(outlines: list[np.ndarray], p: Point) -> float:
     Of edges equally near (a point at a corner), the one with the most room on both sides of the
     point's projection wins, as a door sits inside a wall, not at its end.
     """
-    a = np.concatenate([o for o in outlines])
+    a = np.concatenate(outlines)
     b = np.concatenate([np.roll(o, -1, axis=0) for o in outlines])
     d = b - a
     length2 = np.maximum((d**2).sum(axis=1), 1e-300)

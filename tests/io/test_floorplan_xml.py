@@ -472,3 +472,10 @@ def test_write__round_trip_of_a_real_plan(real_plans_dir, tmp_path, name):
     b = load(real_plans_dir / name)
     save(b, tmp_path / "plan.xml")
     assert_same_building(load(tmp_path / "plan.xml"), b)
+
+
+def test_write__empty_building_is_a_config_error(tmp_path):
+    from realistic_indoor.building import Building
+
+    with pytest.raises(ConfigError, match="without rooms"):
+        write(Building("office", ()), tmp_path / "empty.xml")

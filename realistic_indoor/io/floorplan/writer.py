@@ -8,6 +8,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
+from realistic_indoor.errors import ConfigError
 
 __all__ = ["PX_PER_M", "write"]
 
@@ -29,7 +30,12 @@ def write(building: Building, path: str | Path) -> list[Path]:
 
     Returns:
         ``[path]``.
+
+    Raises:
+        ConfigError: If the building has no rooms.
     """
+    if not building.rooms:
+        raise ConfigError("cannot write a building without rooms")
     path = Path(path)
     name = str(building.metadata.get("name") or path.name.removesuffix(".xml"))
     root = ET.Element("building", id=str(building.metadata.get("building_id") or name))

@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import pkgutil
 import sys
+import warnings
 
 from realistic_indoor import __version__
 from realistic_indoor.errors import RealisticIndoorError
@@ -37,6 +39,7 @@ def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 1 user error, 2 usage error)."""
     parser = build_parser()
     args = parser.parse_args(argv)
+    warnings.showwarning = _one_line_warning
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
@@ -48,6 +51,15 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # The reader of our output went away (e.g. `| head`): not an error of ours.
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
+        return 0
+
+
+def _one_line_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Print a warning as one line naming its kind, without the source line."""
+    print(f"realistic-indoor: warning: {message}", file=file or sys.stderr)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--resolution", type=float, default=0.05, help="ROS map resolution, metres per pixel (default 0.05)"
     )
+    p.add_argument(
+        "--infer-entrances",
+        action="store_true",
+        help="floor-plan XML input: add an exterior door to entrance spaces (real plans have none)",
+    )
     p.set_defaults(func=run)
 
 
@@ -27,7 +32,7 @@ def run(args: argparse.Namespace) -> int:
     """Read, write, and report the files written."""
     from realistic_indoor.io import format_of, load, save
 
-    b = load(args.plan)
+    b = load(args.plan, **({"infer_entrances": True} if args.infer_entrances else {}))
     options = {"resolution_m": args.resolution} if format_of(args.output) == "ros" else {}
     for path in save(b, args.output, **options):
         print(f"wrote {path}")

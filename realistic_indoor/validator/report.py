@@ -103,7 +103,8 @@ def _titled(title: str, lines: list[str], md: bool) -> str:
 
 def _text(c: Comparison, fmt: str, worst: int) -> str:
     md = fmt == "markdown"
-    heading = f"Realism of {len(c.sets)} set(s) of {c.building_type.value} plans against {c.reference.name} ({c.reference.column})"
+    sets = f"{len(c.sets)} set{'s' if len(c.sets) > 1 else ''}"
+    heading = f"Realism of {sets} of {c.building_type.value} plans against {c.reference.name} ({c.reference.column})"
     parts = [f"## {heading}" if md else heading]
     parts.append("\n".join(("- " if md else "  ") + _set_line(s) for s in c.sets))
     tables = {s.name: s.table for s in c.sets} | {c.reference.column: c.reference.table}

@@ -7,7 +7,7 @@ def test_validate__two_folders_named_with_labels(plan_folders, capsys):
     code = main(["validate", str(plan_folders / "mazes"), str(plan_folders / "tidy"), "--labels", "m,t"])
     out = capsys.readouterr().out
     assert code == 0
-    assert "Realism of 2 set(s) of office plans against real offices (paper: office)" in out
+    assert "Realism of 2 sets of office plans against real offices (paper: office)" in out
     assert "m vs t" in out
     assert "  m: 4 plans, 32 rooms" in out
 

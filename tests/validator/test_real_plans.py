@@ -38,7 +38,9 @@ def test_real_plans__table_counts_rooms_and_doorways_as_the_files_give_them(real
     spaces, corridors, incidences = _file_counts(real_plans_dir / kind)
     table = label_table(real_sets[kind].buildings)
     repairs = [r["action"] for b in real_sets[kind].buildings for r in b.metadata.get("repairs", [])]
-    dropped = sum(a.startswith("dropped the space") for a in repairs)  # zero-area spaces, reported by the reader
+    dropped = sum(
+        a.startswith("dropped the space") for a in repairs
+    )  # zero-area spaces, reported by the reader
     assert dropped <= 1
     assert sum(row["count"] for row in table.values()) == spaces - dropped
     assert table[SemanticLabel.CORRIDOR]["count"] == corridors

@@ -58,7 +58,7 @@ def test_render_comparison__terminal_report_has_every_section(comparison):
 
 def test_render_comparison__markdown_json_csv_agree(comparison):
     md = render_comparison(comparison, "markdown")
-    assert md.startswith("## Realism of 2 set(s) of office plans against real offices")
+    assert md.startswith("## Realism of 2 sets of office plans against real offices")
     data = json.loads(render_comparison(comparison, "json"))
     assert [s["name"] for s in data["sets"]] == ["mazes", "tidy"]
     assert data["sets"][0]["score"]["overall"] == pytest.approx(comparison.sets[0].score.overall)

@@ -60,3 +60,20 @@ def test_validate__bad_input_is_one_line(plan_folders, tmp_path, capsys):
 def test_validate__paper_table_by_name(plan_folders, capsys):
     assert main(["validate", str(plan_folders / "mazes"), "--reference", "robocup_2013_final_map"]) == 0
     assert "against the 2013 competition map" in capsys.readouterr().out
+
+
+def test_validate__same_input_gives_the_same_bytes(plan_folders, capsys):
+    argv = [
+        "validate",
+        str(plan_folders / "mazes"),
+        str(plan_folders / "tidy"),
+        "--format",
+        "json",
+        "--seed",
+        "4",
+    ]
+    outputs = []
+    for _ in range(2):
+        assert main(argv) == 0
+        outputs.append(capsys.readouterr().out)
+    assert outputs[0] == outputs[1]

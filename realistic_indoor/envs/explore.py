@@ -1,0 +1,246 @@
+"""Exploration: drive a laser-equipped robot through a building until its map covers the floor."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import gymnasium as gym
+import numpy as np
+from gymnasium import spaces
+
+from realistic_indoor.building.building import Building
+from realistic_indoor.envs.actions import ActionMap
+from realistic_indoor.envs.config import EnvConfig
+from realistic_indoor.envs.observations import explore_observations
+from realistic_indoor.envs.rewards import reward_terms, weighted_sum
+from realistic_indoor.envs.simulation import Simulation, StepOutcome
+from realistic_indoor.envs.source import building_source
+from realistic_indoor.errors import ConfigError
+
+__all__ = ["ExploreEnv"]
+
+_RESET_OPTIONS = frozenset({"building"})
+
+
+class ExploreEnv(gym.Env):
+    """Explore a building with a differential-drive robot, a 2D laser scanner and a map.
+
+    ## Description
+
+    A disc robot (pymunk physics: it collides with the walls and slides along them) starts at
+    the entrance of a building it has never seen. Each control step it drives with the
+    commanded linear and angular velocity, takes a laser scan and adds it to its occupancy
+    map. The goal is to observe the building's floor as fast as possible without bumping into
+    walls. By default every episode runs in a new building drawn by a realistic generator
+    (office, school, house) or the random baseline, from the episode's seed.
+
+    ## Action Space
+
+    With ``action_type="continuous"`` (default) the action is a ``ndarray`` of shape ``(2,)``
+    in ``[-1, 1]``, scaled to the robot's limits (values outside are clipped):
+
+    | Num | Action                  | Min | Max | Unit at 1                         |
+    |-----|-------------------------|-----|-----|-----------------------------------|
+    | 0   | Linear velocity command | -1  | 1   | ``robot.max_speed_m_s`` (m/s)      |
+    | 1   | Turn rate command (CCW) | -1  | 1   | ``robot.max_turn_rate_rad_s`` (rad/s) |
+
+    With ``action_type="discrete"`` it is ``Discrete(6)``: forward, forward-left, forward-right,
+    turn left, turn right, back (see :data:`realistic_indoor.envs.actions.DISCRETE_ACTIONS`).
+    The robot reaches a command as fast as its acceleration limits allow.
+
+    ## Observation Space
+
+    A ``Dict``:
+
+    | Key         | Shape            | Dtype   | Min            | Max           | Meaning                                         |
+    |-------------|------------------|---------|----------------|---------------|-------------------------------------------------|
+    | `scan`      | `(n_beams,)`     | float32 | 0              | 1             | laser ranges / ``max_range_m``, right to left   |
+    | `local_map` | `(1, S, S)`      | uint8   | 0              | 255           | map image, robot at the centre heading up: 0 wall, 128 unknown, 255 free |
+    | `velocity`  | `(2,)`           | float32 | -limits        | limits        | forward speed (m/s), turn rate (rad/s)          |
+    | `pose`      | `(3,)`           | float32 | (-1000, -1000, -pi) | (1000, 1000, pi) | odometry: x (m) along the start heading, y (m) to its left, heading (rad), relative to the start pose |
+
+    ``S`` is ``local_map.size_px`` (64 by default, 0.2 m per pixel: a 12.8 m square). The
+    defaults give 109 beams over 270 degrees with a 10 m range.
+
+    ## Rewards
+
+    The reward is a weighted sum of named terms (weights: ``EnvConfig.rewards``); the terms
+    themselves are returned in ``info["rewards"]``:
+
+    | Term        | Value                                         | Default weight |
+    |-------------|-----------------------------------------------|----------------|
+    | `new_area`  | reachable floor observed for the first time (m2) | 0.1 per m2  |
+    | `collision` | 1 if the robot touched a wall during the step | -0.5           |
+    | `time`      | 1 every step                                  | -0.01          |
+
+    ## Starting State
+
+    The robot stands at rest just inside the building's first entrance, facing inward; in a
+    building without an exterior door (real plans), in the middle of its largest hall (else
+    its largest room). Its map holds the first scan.
+
+    ## Episode End
+
+    1. Termination: the map covers ``coverage_target`` (0.9 by default) of the reachable floor.
+    2. Truncation: ``max_steps`` control steps have passed (also the registered
+       ``max_episode_steps``).
+
+    ## Arguments
+
+    ``gym.make(id, **kwargs)`` and ``ExploreEnv(config, render_mode, **kwargs)`` take any field
+    of :class:`~realistic_indoor.envs.config.EnvConfig` as a keyword, overriding the preset:
+
+    | Parameter         | Type                 | Default     | Description                                   |
+    |-------------------|----------------------|-------------|-----------------------------------------------|
+    | `config`          | `EnvConfig`          | preset      | the whole configuration                       |
+    | `render_mode`     | `str` or `None`      | `None`      | `"rgb_array"`: a top view of the episode      |
+    | `building_type`   | `str`                | preset      | `"office"`, `"school"`, `"house"`, `"random"` |
+    | `area_m2`         | `float`              | generator's | floor area asked of the generator (m2)        |
+    | `generator`       | callable             | `None`      | any `rng -> Building` generator               |
+    | `building`        | `Building`           | `None`      | one fixed building for every episode          |
+    | `plan_path`       | path                 | `None`      | a plan file run as a fixed building           |
+    | `world`           | `WorldConfig`        | 0.05 m      | raster (and map) resolution, wall thickness   |
+    | `robot`           | `RobotConfig`        | 0.25 m disc | radius, limits, control rate (5 Hz), sub-steps |
+    | `lidar`           | `LidarConfig`        | 109 beams   | field of view, beams, range (10 m), noise     |
+    | `local_map`       | `LocalMapConfig`     | 64 px       | size and resolution of the map image          |
+    | `rewards`         | `RewardWeights`      | see above   | weight of each reward term                    |
+    | `coverage_target` | `float`              | 0.9         | coverage that ends the episode                |
+    | `max_steps`       | `int`                | preset      | steps before truncation                       |
+    | `action_type`     | `str`                | continuous  | `"continuous"` or `"discrete"`                |
+
+    ``reset(options={"building": b})`` runs that episode in building ``b``.
+
+    ``info`` holds ``coverage`` (share of the reachable floor observed), ``observed_area_m2``,
+    ``path_length_m`` (distance driven), ``collisions`` (steps with a wall contact) and, after
+    a step, ``rewards``.
+
+    ```python
+    >>> import gymnasium as gym
+    >>> import realistic_indoor.envs
+    >>> env = gym.make("OfficeExplore-v0", area_m2=400.0)
+    >>> obs, info = env.reset(seed=0)
+    >>> sorted(obs)
+    ['local_map', 'pose', 'scan', 'velocity']
+
+    ```
+
+    ## Version History
+
+    * v0: Initial version.
+    """
+
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 5}
+
+    def __init__(
+        self, config: EnvConfig | None = None, render_mode: str | None = None, **overrides: Any
+    ) -> None:
+        config = config if config is not None else EnvConfig()
+        if not isinstance(config, EnvConfig):
+            raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
+        self.config = config.replace(**overrides) if overrides else config
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ConfigError(
+                f"render_mode must be one of {self.metadata['render_modes']} or None, got {render_mode!r}"
+            )
+        self.render_mode = render_mode
+        self.metadata = {**self.metadata, "render_fps": self.config.robot.control_hz}
+        self._source = building_source(self.config)
+        self._sim = Simulation(self.config)
+        self._actions = ActionMap(
+            self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
+        )
+        self.action_space = self._actions.space
+        self._observations = self._make_observations()
+        self.observation_space = spaces.Dict({k: o.space for k, o in self._observations.items()})
+        self._steps = 0
+
+    # -- the Gymnasium API ----------------------------------------------------------------------
+    def reset(
+        self, *, seed: int | None = None, options: dict[str, Any] | None = None
+    ) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
+        """Start an episode in a new building (drawn from the seed) or in ``options["building"]``."""
+        super().reset(seed=seed)
+        options = options or {}
+        unknown = sorted(set(options) - _RESET_OPTIONS)
+        if unknown:
+            raise ConfigError(
+                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(_RESET_OPTIONS))}"
+            )
+        building = options.get("building")
+        if building is None:
+            building = self._source(self.np_random)
+        if not isinstance(building, Building):
+            raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
+        self._sim.load(building)
+        self._sim.reset(self.np_random)
+        self._steps = 0
+        self._start_episode()
+        return self._observe(), self._info()
+
+    def step(
+        self, action: np.ndarray | int
+    ) -> tuple[dict[str, np.ndarray], float, bool, bool, dict[str, Any]]:
+        """Drive one control step, scan, map; return observation, reward, end flags and info."""
+        if self._sim.world is None:
+            raise gym.error.ResetNeeded("call reset() before step()")
+        v, w = self._actions.command(action)
+        outcome = self._sim.step(v, w, self.np_random)
+        self._steps += 1
+        terms = self._reward_terms(outcome)
+        reward = weighted_sum(self.config.rewards, terms)
+        terminated = self._terminated()
+        truncated = self._steps >= self.config.max_steps
+        info = self._info()
+        info["rewards"] = terms
+        return self._observe(), reward, terminated, truncated, info
+
+    def render(self) -> np.ndarray | None:
+        """A top view of the episode as an ``(H, W, 3)`` uint8 image (``render_mode="rgb_array"``).
+
+        Shows the plan, the robot's map, the trajectory, the latest scan and the robot.
+        """
+        if self.render_mode is None:
+            gym.logger.warn('render() needs a render mode: gym.make(..., render_mode="rgb_array")')
+            return None
+        from realistic_indoor.envs.render import top_view
+
+        return top_view(self._sim, **self._render_extras())
+
+    # -- state a user may inspect --------------------------------------------------------------------
+    @property
+    def building(self) -> Building | None:
+        """The building of the current episode (``None`` before the first reset)."""
+        return self._sim.building
+
+    @property
+    def simulation(self) -> Simulation:
+        """The world, robot, laser and map of the current episode (read them, don't change them)."""
+        return self._sim
+
+    # -- hooks a task overrides ------------------------------------------------------------------------
+    def _make_observations(self) -> dict[str, Any]:
+        return explore_observations(self.config)
+
+    def _start_episode(self) -> None:
+        """Set up what a task adds to an episode (nothing for exploration)."""
+
+    def _reward_terms(self, outcome: StepOutcome) -> dict[str, float]:
+        return reward_terms(outcome.new_area_m2, outcome.collided)
+
+    def _terminated(self) -> bool:
+        return self._sim.map.coverage >= self.config.coverage_target
+
+    def _info(self) -> dict[str, Any]:
+        sim = self._sim
+        return {
+            "coverage": sim.map.coverage,
+            "observed_area_m2": sim.map.observed_area_m2,
+            "path_length_m": sim.path_length_m,
+            "collisions": sim.collisions,
+        }
+
+    def _render_extras(self) -> dict[str, Any]:
+        return {}
+
+    def _observe(self) -> dict[str, np.ndarray]:
+        return {name: part.observe(self._sim) for name, part in self._observations.items()}

@@ -1,0 +1,97 @@
+"""Observations: each part of the observation is a small class with a ``space`` and ``observe()``."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+from gymnasium import spaces
+
+if TYPE_CHECKING:
+    from realistic_indoor.envs.config import EnvConfig
+    from realistic_indoor.envs.simulation import Simulation
+
+__all__ = [
+    "POSE_LIMIT_M",
+    "LocalMapObservation",
+    "PoseObservation",
+    "ScanObservation",
+    "VelocityObservation",
+    "explore_observations",
+]
+
+POSE_LIMIT_M = 1000.0
+"""Bound of the odometry position in the observation space (m); positions are clipped to it."""
+
+
+class ScanObservation:
+    """The laser ranges divided by the maximum range: ``(n_beams,)`` float32 in ``[0, 1]``.
+
+    Beams are ordered from the right end of the field of view to the left (counter-clockwise);
+    a beam with no return reads 1.
+    """
+
+    def __init__(self, config: EnvConfig) -> None:
+        self._scale = np.float32(1.0 / config.lidar.max_range_m)
+        self.space = spaces.Box(0.0, 1.0, (config.lidar.n_beams,), np.float32)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The normalised ranges of the latest scan (a new array)."""
+        return np.minimum(sim.scan.ranges_m * self._scale, np.float32(1.0))
+
+
+class LocalMapObservation:
+    """The egocentric map image: ``(1, S, S)`` uint8, robot at the centre, heading up.
+
+    Pixels are 0 (wall), 128 (unknown) or 255 (free floor): a channel-first image that
+    stable-baselines3 recognises as one (``CnnPolicy``, ``MultiInputPolicy``).
+    """
+
+    def __init__(self, config: EnvConfig) -> None:
+        s = config.local_map.size_px
+        self.space = spaces.Box(0, 255, (1, s, s), np.uint8)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The image around the robot's true pose (a new array)."""
+        image = np.empty(self.space.shape, dtype=np.uint8)
+        sim.map.local_view(sim.robot.pose, out=image[0])
+        return image
+
+
+class VelocityObservation:
+    """The robot's forward speed (m/s) and turn rate (rad/s), float32, within their limits."""
+
+    def __init__(self, config: EnvConfig) -> None:
+        r = config.robot
+        self._high = np.array([r.max_speed_m_s, r.max_turn_rate_rad_s], dtype=np.float32)
+        self.space = spaces.Box(-self._high, self._high, (2,), np.float32)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The current velocity (a new array)."""
+        return np.clip(np.array(sim.robot.velocity, dtype=np.float32), -self._high, self._high)
+
+
+class PoseObservation:
+    """Odometry: ``(x m, y m, heading rad)`` relative to the start pose, float32.
+
+    ``x`` points along the start heading, ``y`` to its left; positions are clipped to
+    :data:`POSE_LIMIT_M`, the heading lies in ``[-pi, pi]``.
+    """
+
+    def __init__(self, config: EnvConfig) -> None:
+        self._high = np.array([POSE_LIMIT_M, POSE_LIMIT_M, np.pi], dtype=np.float32)
+        self.space = spaces.Box(-self._high, self._high, (3,), np.float32)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The pose in the robot's map frame (a new array)."""
+        return np.clip(np.array(sim.odometry(), dtype=np.float32), -self._high, self._high)
+
+
+def explore_observations(config: EnvConfig) -> dict[str, object]:
+    """The parts of an exploration environment's observation, keyed by name."""
+    return {
+        "scan": ScanObservation(config),
+        "local_map": LocalMapObservation(config),
+        "velocity": VelocityObservation(config),
+        "pose": PoseObservation(config),
+    }

@@ -1,0 +1,64 @@
+"""The registered environments: one preset (keyword overrides of the config) per id."""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+__all__ = ["PRESETS", "EnvPreset", "preset_config"]
+
+_ENTRY_POINTS = {
+    "Explore": "realistic_indoor.envs.explore:ExploreEnv",
+    "Search": "realistic_indoor.envs.search:SearchEnv",
+}
+_MAX_STEPS = {"office": 2000, "school": 3000, "house": 1000, "random": 2000}
+"""Control steps (0.2 s each at 5 Hz) per episode, by building type: time to cover most of a
+building of the generator's default size at a fraction of the robot's top speed."""
+
+
+class EnvPreset(NamedTuple):
+    """One registered environment.
+
+    Attributes:
+        env_id: The id ``gym.make`` takes, e.g. ``"OfficeExplore-v0"``.
+        entry_point: ``"module:Class"`` of the environment.
+        kwargs: Config fields the preset sets (the rest keep the environment's defaults);
+            plain values only, so registering imports nothing heavy.
+        max_episode_steps: The step limit (also ``kwargs["max_steps"]``).
+    """
+
+    env_id: str
+    entry_point: str
+    kwargs: dict[str, Any]
+    max_episode_steps: int
+
+
+def _presets() -> dict[str, EnvPreset]:
+    out = {}
+    for task, entry_point in _ENTRY_POINTS.items():
+        for building_type, max_steps in _MAX_STEPS.items():
+            env_id = f"{building_type.capitalize()}{task}-v0"
+            kwargs = {"building_type": building_type, "max_steps": max_steps}
+            out[env_id] = EnvPreset(env_id, entry_point, kwargs, max_steps)
+    return out
+
+
+PRESETS: dict[str, EnvPreset] = _presets()
+"""Every registered environment, keyed by id: ``{Office,School,House,Random}{Explore,Search}-v0``."""
+
+
+def preset_config(env_id: str, **overrides: Any):
+    """The full :class:`~realistic_indoor.envs.config.EnvConfig` of a registered id.
+
+    Args:
+        env_id: A key of :data:`PRESETS`.
+        **overrides: Config fields to change.
+
+    Raises:
+        ConfigError: If the id is unknown or an override is invalid.
+    """
+    from realistic_indoor.envs.config import EnvConfig
+    from realistic_indoor.errors import ConfigError
+
+    if env_id not in PRESETS:
+        raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
+    return EnvConfig().replace(**{**PRESETS[env_id].kwargs, **overrides})

@@ -38,10 +38,11 @@ class ActionMap:
     """
 
     def __init__(self, action_type: str, max_speed_m_s: float, max_turn_rad_s: float) -> None:
-        self._scale = np.array([max_speed_m_s, max_turn_rad_s])
+        self._v_max = float(max_speed_m_s)
+        self._w_max = float(max_turn_rad_s)
         self.discrete = action_type == "discrete"
         if self.discrete:
-            self._table = np.array([(v, w) for _, v, w in DISCRETE_ACTIONS]) * self._scale
+            self._table = [(v * self._v_max, w * self._w_max) for _, v, w in DISCRETE_ACTIONS]
             self.space: spaces.Space = spaces.Discrete(len(DISCRETE_ACTIONS))
         else:
             self.space = spaces.Box(-1.0, 1.0, (2,), np.float32)
@@ -49,8 +50,6 @@ class ActionMap:
     def command(self, action: np.ndarray | int) -> tuple[float, float]:
         """The velocity command ``(v m/s, w rad/s)`` of ``action``."""
         if self.discrete:
-            v, w = self._table[int(action)]
-        else:
-            a = np.asarray(action, dtype=np.float64).reshape(2)
-            v, w = np.clip(a, -1.0, 1.0) * self._scale
-        return float(v), float(w)
+            return self._table[int(action)]
+        a, b = (float(x) for x in np.ravel(action))
+        return max(-1.0, min(1.0, a)) * self._v_max, max(-1.0, min(1.0, b)) * self._w_max

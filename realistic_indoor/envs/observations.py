@@ -63,12 +63,16 @@ class VelocityObservation:
 
     def __init__(self, config: EnvConfig) -> None:
         r = config.robot
-        self._high = np.array([r.max_speed_m_s, r.max_turn_rate_rad_s], dtype=np.float32)
-        self.space = spaces.Box(-self._high, self._high, (2,), np.float32)
+        self._v_max, self._w_max = r.max_speed_m_s, r.max_turn_rate_rad_s
+        high = np.array([self._v_max, self._w_max], dtype=np.float32)
+        self.space = spaces.Box(-high, high, (2,), np.float32)
 
     def observe(self, sim: Simulation) -> np.ndarray:
         """The current velocity (a new array)."""
-        return np.clip(np.array(sim.robot.velocity, dtype=np.float32), -self._high, self._high)
+        v, w = sim.robot.velocity
+        v = max(-self._v_max, min(self._v_max, v))
+        w = max(-self._w_max, min(self._w_max, w))
+        return np.array((v, w), dtype=np.float32)
 
 
 class PoseObservation:
@@ -79,12 +83,15 @@ class PoseObservation:
     """
 
     def __init__(self, config: EnvConfig) -> None:
-        self._high = np.array([POSE_LIMIT_M, POSE_LIMIT_M, np.pi], dtype=np.float32)
-        self.space = spaces.Box(-self._high, self._high, (3,), np.float32)
+        high = np.array([POSE_LIMIT_M, POSE_LIMIT_M, np.pi], dtype=np.float32)
+        self.space = spaces.Box(-high, high, (3,), np.float32)
 
     def observe(self, sim: Simulation) -> np.ndarray:
         """The pose in the robot's map frame (a new array)."""
-        return np.clip(np.array(sim.odometry(), dtype=np.float32), -self._high, self._high)
+        x, y, heading = sim.odometry()
+        x = max(-POSE_LIMIT_M, min(POSE_LIMIT_M, x))
+        y = max(-POSE_LIMIT_M, min(POSE_LIMIT_M, y))
+        return np.array((x, y, heading), dtype=np.float32)
 
 
 def explore_observations(config: EnvConfig) -> dict[str, object]:

@@ -147,3 +147,27 @@ def test_cli__console_script_exit_codes(plan_json, tmp_path):
     _one_line_error(bad.stderr, str(missing))
     usage = subprocess.run([str(script), "render"], capture_output=True, text=True, timeout=120)
     assert usage.returncode == 2 and "usage:" in usage.stderr
+
+
+def test_cli__info_on_a_real_plan(real_plans_dir, capsys):
+    assert main(["info", str(real_plans_dir / "office" / "Off-2.xml")]) == 0
+    out = capsys.readouterr().out
+    assert "type: office" in out and "rooms: 31 " in out
+
+
+def test_cli__render_a_real_plan_with_entrances(real_plans_dir, tmp_path, capsys):
+    out = tmp_path / "off2.png"
+    plan = real_plans_dir / "office" / "Off-2.xml"
+    assert main(["render", str(plan), "-o", str(out), "--dpi", "50", "--infer-entrances", "--functions"]) == 0
+    assert out.read_bytes().startswith(PNG_MAGIC)
+
+
+def test_cli__convert_a_real_plan_to_json_keeps_it(real_plans_dir, tmp_path):
+    plan = real_plans_dir / "school" / "Sabadell1_updated.xml"
+    assert main(["convert", str(plan), "-o", str(tmp_path / "s.json")]) == 0
+    assert load(tmp_path / "s.json") == load(plan)
+
+
+def test_cli__infer_entrances_needs_a_floorplan_input(plan_json, tmp_path, capsys):
+    assert main(["render", str(plan_json), "-o", str(tmp_path / "p.png"), "--infer-entrances"]) == 1
+    _one_line_error(capsys.readouterr().err, str(plan_json), "floor-plan XML")

@@ -33,6 +33,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     title.add_argument("--title", help="title text (default: plan name, type, room and door counts, area)")
     title.add_argument("--no-title", action="store_true", help="no title")
     p.add_argument("--no-legend", action="store_true", help="leave out the legend")
+    p.add_argument(
+        "--infer-entrances",
+        action="store_true",
+        help="floor-plan XML input: add exterior doors where the plan's entrances are (real plans have none)",
+    )
     p.set_defaults(func=run)
 
 
@@ -45,7 +50,12 @@ def run(args: argparse.Namespace) -> int:
         raise ConfigError(
             f"{args.output}: render writes .png or .svg pictures (use convert for other formats)"
         )
-    b = load(args.plan)
+    options = {}
+    if args.infer_entrances:
+        if format_of(args.plan) != "floorplan":
+            raise ConfigError(f"{args.plan}: --infer-entrances applies to floor-plan XML plans only")
+        options["infer_entrances"] = True
+    b = load(args.plan, **options)
     written = save(
         b,
         args.output,

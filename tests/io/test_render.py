@@ -155,3 +155,16 @@ def test_render__wrong_extension_or_size_is_a_config_error(tiny_office, tmp_path
         write(tiny_office, tmp_path / "plan.jpg")
     with pytest.raises(ConfigError, match="positive"):
         render_array(tiny_office, size_in=0)
+
+
+def test_render__title_names_the_plan(tiny_office):
+    from dataclasses import replace
+
+    from realistic_indoor.io.render.decorations import auto_title
+
+    named = replace(tiny_office, metadata={"name": "Off-2", "source": "/data/plans/other.xml"})
+    assert auto_title(named).splitlines()[0] == "Off-2"
+    from_file = replace(tiny_office, metadata={"source": "/data/plans/Off-3.xml"})
+    assert auto_title(from_file).splitlines()[0] == "Off-3"
+    generated = replace(tiny_office, metadata={"generator": "office", "seed": 7})
+    assert auto_title(generated).splitlines()[0] == "office (seed 7)"

@@ -25,9 +25,11 @@ LEGEND_ORDER = (
 
 
 def auto_title(building: Building) -> str:
-    """Two lines: the plan's name (source file or generator) and its type and counts."""
+    """Two lines: the plan's name (``name``, source file or generator) and its type and counts."""
     meta = building.metadata
-    if meta.get("source"):
+    if meta.get("name"):
+        name = str(meta["name"])
+    elif meta.get("source"):
         name = Path(str(meta["source"])).stem
     elif meta.get("generator"):
         seed = meta.get("seed")

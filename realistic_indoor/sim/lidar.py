@@ -50,11 +50,14 @@ class Scan(NamedTuple):
             the building through an exterior door: the outside returns nothing).
         true: Noise-free distances and what each beam met (:class:`RayHits`); the beam ends
             where it entered a wall or left the building. Mapping uses these.
+        offsets_rad: ``(n_beams,)`` beam directions relative to the heading (rad), the
+            scanner's :attr:`Lidar.offsets_rad` (shared, read-only).
     """
 
     pose: tuple[float, float, float]
     ranges_m: np.ndarray
     true: RayHits
+    offsets_rad: np.ndarray
 
     @property
     def returned(self) -> np.ndarray:
@@ -110,4 +113,6 @@ class Lidar:
             returned = true.kind == WALL
             noise = rng.normal(0.0, c.noise_std_m, n)
             ranges = np.where(returned, np.clip(ranges + noise, 0.0, c.max_range_m), ranges)
-        return Scan((float(x), float(y), float(theta)), ranges.astype(np.float32, copy=False), true)
+        return Scan(
+            (float(x), float(y), float(theta)), ranges.astype(np.float32, copy=False), true, self.offsets_rad
+        )

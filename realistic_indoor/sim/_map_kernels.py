@@ -1,0 +1,231 @@
+"""Numba kernels of the robot's map: which cells a scan swept, marking them, the local view.
+
+Geometry is in cell units: cell ``(r, c)`` spans ``[c, c + 1) x [r, r + 1)``, centre at
+``(c + 0.5, r + 0.5)``. Cells are gathered as row spans ``(row, first col, end col)`` and
+marked in one loop, with the marking written inline: a numba call taking arrays costs more
+than the marking itself.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from realistic_indoor.sim.raster import WALL
+
+UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
+"""States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
+T_WALL, T_OUTSIDE, T_FREE, T_REACHABLE = 0, 1, 2, 3
+"""What the ground truth lets a beam mark in a cell: free only if ``>= T_FREE``."""
+_NUDGE = 1e-3
+"""Distance (cells) past a beam's end at which the wall cell it hit is looked up."""
+
+
+@njit(cache=True, nogil=True)
+def integrate_scan(
+    grid, pooled, k, targets, px, py, cos_h, sin_h, cos_off, sin_off, range_m, kind, scale, closed
+):  # pragma: no cover - compiled
+    """Mark what one scan saw; return the number of reachable cells observed for the first time.
+
+    Free: the cells whose centre lies in the fan the beams swept (between each two neighbouring
+    beams, up to the shorter of their ranges) plus the cells each beam crosses. Occupied: the
+    wall cell each returned beam ends in. Ranges are in metres, ``scale`` is cells per metre.
+    """
+    n = cos_off.shape[0]
+    dxs = np.empty(n)
+    dys = np.empty(n)
+    ts = np.empty(n)
+    for i in range(n):
+        dxs[i] = cos_h * cos_off[i] - sin_h * sin_off[i]
+        dys[i] = sin_h * cos_off[i] + cos_h * sin_off[i]
+        ts[i] = range_m[i] * scale
+    h, w = grid.shape
+    if n > 1:
+        vx, vy = _fan_outline(px, py, dxs, dys, ts, closed)
+        rows, c0, c1 = _polygon_spans(vx, vy, h, w)
+        new = _mark_spans(grid, pooled, k, targets, rows, c0, c1)
+    else:
+        new = 0
+    rows, c0, c1 = _beam_spans(px, py, dxs, dys, ts, closed, h, w)
+    new += _mark_spans(grid, pooled, k, targets, rows, c0, c1)
+    for i in range(n):
+        if kind[i] == WALL:
+            c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
+            r = math.floor(py + (ts[i] + _NUDGE) * dys[i])
+            if 0 <= r < h and 0 <= c < w and targets[r, c] == T_WALL:
+                grid[r, c] = MAPPED_OCCUPIED
+                pooled[r // k, c // k] = MAPPED_OCCUPIED
+    return new
+
+
+@njit(cache=True, nogil=True)
+def _mark_spans(grid, pooled, k, targets, rows, c0, c1):  # pragma: no cover - compiled
+    new = 0
+    for i in range(rows.shape[0]):
+        r = rows[i]
+        for c in range(c0[i], c1[i]):
+            if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
+                grid[r, c] = MAPPED_FREE
+                if pooled[r // k, c // k] == UNKNOWN:
+                    pooled[r // k, c // k] = MAPPED_FREE
+                if targets[r, c] == T_REACHABLE:
+                    new += 1
+    return new
+
+
+@njit(cache=True, nogil=True)
+def _fan_outline(px, py, dxs, dys, ts, closed):  # pragma: no cover - compiled
+    """Outline of the fan: for each two neighbouring beams, both at the shorter range.
+
+    Cutting each wedge at the shorter range keeps what hides behind a corner between two
+    beams from counting as seen. An open fan (less than a full turn) starts at the sensor.
+    """
+    n = dxs.shape[0]
+    pairs = n if closed else n - 1
+    first = 0 if closed else 1
+    vx = np.empty(2 * pairs + first)
+    vy = np.empty(2 * pairs + first)
+    vx[0] = px
+    vy[0] = py
+    for i in range(pairs):
+        j = (i + 1) % n
+        t = min(ts[i], ts[j])
+        o = first + 2 * i
+        vx[o] = px + t * dxs[i]
+        vy[o] = py + t * dys[i]
+        vx[o + 1] = px + t * dxs[j]
+        vy[o + 1] = py + t * dys[j]
+    return vx, vy
+
+
+@njit(cache=True, nogil=True)
+def _polygon_spans(vx, vy, h, w):  # pragma: no cover - compiled
+    """Row spans of the cells whose centre lies in a polygon, clipped to an ``h x w`` grid.
+
+    Scanline fill: each edge drops its crossings into per-row buckets (a counting sort), then
+    each row pairs its sorted crossings. Cost grows with the perimeter (in rows) plus the rows,
+    not with edges times rows.
+    """
+    nv = vx.shape[0]
+    r_lo = max(math.ceil(vy.min() - 0.5), 0)
+    r_hi = min(math.ceil(vy.max() - 0.5), h)
+    n_rows = max(r_hi - r_lo, 0)
+    start = np.zeros(n_rows + 1, dtype=np.int64)
+    for e in range(nv):
+        f = (e + 1) % nv
+        for r in range(
+            max(math.ceil(min(vy[e], vy[f]) - 0.5), r_lo), min(math.ceil(max(vy[e], vy[f]) - 0.5), r_hi)
+        ):
+            start[r - r_lo + 1] += 1
+    for i in range(n_rows):
+        start[i + 1] += start[i]
+    nxt = start[:-1].copy()
+    xs = np.empty(start[n_rows])
+    for e in range(nv):
+        f = (e + 1) % nv
+        ra = max(math.ceil(min(vy[e], vy[f]) - 0.5), r_lo)
+        rb = min(math.ceil(max(vy[e], vy[f]) - 0.5), r_hi)
+        if rb > ra:
+            slope = (vx[f] - vx[e]) / (vy[f] - vy[e])
+            for r in range(ra, rb):
+                xs[nxt[r - r_lo]] = vx[e] + (r + 0.5 - vy[e]) * slope
+                nxt[r - r_lo] += 1
+    n_spans = start[n_rows] // 2
+    rows = np.empty(n_spans, dtype=np.int64)
+    c0 = np.empty(n_spans, dtype=np.int64)
+    c1 = np.empty(n_spans, dtype=np.int64)
+    s = 0
+    for i in range(n_rows):
+        a, b = start[i], start[i + 1]
+        _sort_small(xs, a, b)
+        for j in range(a, b - 1, 2):
+            rows[s] = r_lo + i
+            c0[s] = max(math.ceil(xs[j] - 0.5), 0)
+            c1[s] = min(math.ceil(xs[j + 1] - 0.5), w)
+            s += 1
+    return rows[:s], c0[:s], c1[:s]
+
+
+@njit(cache=True, nogil=True)
+def _sort_small(xs, a, b):  # pragma: no cover - compiled
+    """Insertion sort of ``xs[a:b]`` in place (a row holds a handful of crossings)."""
+    for j in range(a + 1, b):
+        x = xs[j]
+        m = j - 1
+        while m >= a and xs[m] > x:
+            xs[m + 1] = xs[m]
+            m -= 1
+        xs[m + 1] = x
+
+
+@njit(cache=True, nogil=True)
+def _beam_spans(px, py, dxs, dys, ts, closed, h, w):  # pragma: no cover - compiled
+    """One-cell spans for the cells each beam crosses beyond the fan (where the fan stops)."""
+    n = dxs.shape[0]
+    t0s = np.zeros(n)  # a lone beam (no fan beside it) is walked from the sensor
+    for i in range(n):
+        if n > 1:
+            t0 = ts[i]
+            if i > 0 or closed:
+                t0 = min(t0, ts[i - 1])
+            if i < n - 1 or closed:
+                t0 = min(t0, ts[(i + 1) % n])
+            t0s[i] = max(t0 - 1.0, 0.0)
+    cap = 0
+    for i in range(n):
+        cap += 2 * math.ceil(ts[i] - t0s[i]) + 4
+    rows = np.empty(cap, dtype=np.int64)
+    cols = np.empty(cap, dtype=np.int64)
+    s = 0
+    for i in range(n):
+        s = _walk(px, py, dxs[i], dys[i], t0s[i], ts[i], h, w, rows, cols, s)
+    return rows[:s], cols[:s], cols[:s] + 1
+
+
+@njit(cache=True, nogil=True)
+def _walk(px, py, dx, dy, t0, t1, h, w, rows, cols, s):  # pragma: no cover - compiled
+    """Append the cells a ray crosses between ``t0`` and ``t1`` (exact grid traversal)."""
+    x = px + t0 * dx
+    y = py + t0 * dy
+    c = math.floor(x)
+    r = math.floor(y)
+    step_c = 1 if dx > 0 else -1
+    step_r = 1 if dy > 0 else -1
+    t_dc = abs(1.0 / dx) if dx != 0.0 else 1e30
+    t_dr = abs(1.0 / dy) if dy != 0.0 else 1e30
+    t_c = t0 + ((c + 1 - x) if dx > 0 else (x - c)) * t_dc if dx != 0.0 else 1e30
+    t_r = t0 + ((r + 1 - y) if dy > 0 else (y - r)) * t_dr if dy != 0.0 else 1e30
+    while 0 <= r < h and 0 <= c < w and s < rows.shape[0]:
+        rows[s] = r
+        cols[s] = c
+        s += 1
+        if min(t_c, t_r) >= t1:
+            break
+        if t_c < t_r:
+            c += step_c
+            t_c += t_dc
+        else:
+            r += step_r
+            t_r += t_dr
+    return s
+
+
+@njit(cache=True, nogil=True)
+def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no cover - compiled
+    """Sample the pooled map on a square grid turned to the heading (pooled-cell units).
+
+    Pixel ``(0, 0)`` is ahead and to the left; pixels off the map show ``lut[UNKNOWN]``.
+    """
+    h, w = pooled.shape
+    s = out.shape[0]
+    half = (s - 1) / 2.0
+    unknown = lut[UNKNOWN]
+    for i in range(s):
+        ahead = (half - i) * step
+        for j in range(s):
+            left = (half - j) * step
+            c = math.floor(px + ahead * cos_h - left * sin_h)
+            r = math.floor(py + ahead * sin_h + left * cos_h)
+            out[i, j] = lut[pooled[r, c]] if 0 <= r < h and 0 <= c < w else unknown

@@ -1,0 +1,211 @@
+"""The robot's own occupancy map, built from its scans: coverage and an egocentric local view."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from realistic_indoor.sim._checks import require_int, require_positive
+from realistic_indoor.sim._map_kernels import (
+    MAPPED_FREE,
+    MAPPED_OCCUPIED,
+    T_FREE,
+    T_OUTSIDE,
+    T_REACHABLE,
+    T_WALL,
+    UNKNOWN,
+    integrate_scan,
+    render_local,
+)
+from realistic_indoor.sim.raster import FREE, WALL
+
+if TYPE_CHECKING:
+    from realistic_indoor.sim.lidar import Scan
+    from realistic_indoor.sim.world import World
+
+__all__ = [
+    "MAPPED_FREE",
+    "MAPPED_OCCUPIED",
+    "PIXEL_FREE",
+    "PIXEL_OCCUPIED",
+    "PIXEL_UNKNOWN",
+    "UNKNOWN",
+    "LocalMapConfig",
+    "RobotMap",
+]
+
+PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
+"""Grey levels of the local map image: walls black, free floor white, unknown grey."""
+
+
+@dataclass(frozen=True)
+class LocalMapConfig:
+    """The egocentric local map: a square image of the robot's map around the robot.
+
+    Attributes:
+        size_px: Side of the image (pixels); 64 suits stable-baselines3's ``CnnPolicy``.
+        resolution_m: Side of a pixel (m). Coarser than the map, each pixel shows the map cells
+            it covers, walls first (a 5 cm wall never vanishes from a 20 cm pixel).
+    """
+
+    size_px: int = 64
+    resolution_m: float = 0.2
+
+    def __post_init__(self) -> None:
+        require_int("LocalMapConfig", "size_px", self.size_px, 1)
+        require_positive("LocalMapConfig", "resolution_m", self.resolution_m, "m")
+
+
+class RobotMap:
+    """The occupancy map a robot builds from its scans, on the world's raster cells.
+
+    A scan marks as free the floor inside the fan its beams sweep (between each two neighbouring
+    beams, up to the shorter of their ranges) and along each beam, and marks as occupied each
+    wall cell a beam returned from. Localisation is perfect and the noise-free ranges are used
+    (as is usual in exploration benchmarks); only cells that are free floor in the ground truth
+    are marked free, so a map never shows free space inside walls, nor outside the building.
+    Cells never change once observed.
+
+    Coverage is the observed share of the world's reachable floor (:attr:`World.reachable`).
+
+    Args:
+        world: The world whose cells and ground truth the map uses.
+        local: Size and resolution of :meth:`local_view` images.
+
+    Attributes:
+        world: The world.
+        local: The local-view settings.
+    """
+
+    def __init__(self, world: World, local: LocalMapConfig | None = None) -> None:
+        self.world = world
+        self.local = local or LocalMapConfig()
+        self._res = world.raster.resolution_m
+        self._x0, self._y0 = world.raster.origin
+        self._targets = _targets(world)
+        self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
+        self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
+        h, w = world.raster.shape
+        self._pooled = np.zeros((-(-h // self._pool), -(-w // self._pool)), dtype=np.uint8)
+        self._reachable_cells = int(np.count_nonzero(world.reachable))
+        self._observed = 0
+        self._offsets: np.ndarray | None = None
+        self._cos = self._sin = np.zeros(0)
+        self._lut = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
+
+    @property
+    def grid(self) -> np.ndarray:
+        """The map: ``(H, W)`` uint8 cell states, the world raster's cells; read-only, kept current.
+
+        States are :data:`UNKNOWN`, :data:`MAPPED_FREE` and :data:`MAPPED_OCCUPIED`.
+        """
+        view = self._grid.view()
+        view.setflags(write=False)
+        return view
+
+    @property
+    def coverage(self) -> float:
+        """Observed share of the reachable floor, in ``[0, 1]``."""
+        return self._observed / self._reachable_cells if self._reachable_cells else 1.0
+
+    @property
+    def observed_area_m2(self) -> float:
+        """Area of the reachable floor observed so far (m2)."""
+        return self._observed * self._res**2
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the map (bytes)."""
+        return int(self._grid.nbytes + self._pooled.nbytes + self._targets.nbytes)
+
+    def reset(self) -> None:
+        """Forget everything: every cell unknown, coverage 0."""
+        self._grid.fill(UNKNOWN)
+        self._pooled.fill(UNKNOWN)
+        self._observed = 0
+
+    def update(self, scan: Scan) -> float:
+        """Add a scan to the map.
+
+        Args:
+            scan: A scan taken in this map's world (:meth:`Lidar.scan`).
+
+        Returns:
+            Area of reachable floor observed for the first time (m2): the exploration reward.
+            Summed over an episode it equals :attr:`observed_area_m2`. Cost: about 1 ns per cell
+            the scan's fan covers (some 10-40 microseconds in an office).
+        """
+        if scan.offsets_rad is not self._offsets:
+            self._set_beams(scan.offsets_rad)
+        x, y, theta = scan.pose
+        new = integrate_scan(
+            self._grid,
+            self._pooled,
+            self._pool,
+            self._targets,
+            (x - self._x0) / self._res,
+            (y - self._y0) / self._res,
+            math.cos(theta),
+            math.sin(theta),
+            self._cos,
+            self._sin,
+            scan.true.range_m,
+            scan.true.kind,
+            1.0 / self._res,
+            self._closed,
+        )
+        self._observed += new
+        return new * self._res**2
+
+    def local_view(self, pose: tuple[float, float, float], out: np.ndarray | None = None) -> np.ndarray:
+        """An image of the map around ``pose``: robot at the centre, heading up.
+
+        Row 0 is ahead of the robot, column 0 to its left; pixels show walls
+        (:data:`PIXEL_OCCUPIED`), free floor (:data:`PIXEL_FREE`) or unknown
+        (:data:`PIXEL_UNKNOWN`, also beyond the map's edge).
+
+        Args:
+            pose: ``(x, y, theta)`` of the robot (m, m, rad).
+            out: A C-contiguous ``(size_px, size_px)`` uint8 array to fill (e.g. a view into an
+                observation buffer); a new one if ``None``.
+
+        Returns:
+            The image. Cost: about 5 microseconds for 64 x 64 pixels.
+        """
+        s = self.local.size_px
+        if out is None:
+            out = np.empty((s, s), dtype=np.uint8)
+        x, y, theta = pose
+        cell = self._res * self._pool
+        render_local(
+            self._pooled,
+            self._lut,
+            (x - self._x0) / cell,
+            (y - self._y0) / cell,
+            math.cos(theta),
+            math.sin(theta),
+            self.local.resolution_m / cell,
+            out,
+        )
+        return out
+
+    def _set_beams(self, offsets: np.ndarray) -> None:
+        self._offsets = offsets
+        self._cos = np.cos(offsets)
+        self._sin = np.sin(offsets)
+        n = len(offsets)
+        span = (offsets[-1] - offsets[0]) * n / (n - 1) if n > 2 else 0.0
+        self._closed = bool(n > 2 and math.isclose(span, 2 * math.pi, abs_tol=1e-6))
+
+
+def _targets(world: World) -> np.ndarray:
+    """What a beam may mark in each cell: wall, outside, free, or free and reachable."""
+    grid = world.raster.grid
+    out = np.full(grid.shape, T_OUTSIDE, dtype=np.uint8)
+    out[grid == WALL] = T_WALL
+    out[grid == FREE] = T_FREE
+    out[world.reachable] = T_REACHABLE
+    return out

@@ -1,0 +1,208 @@
+"""A differential-drive disc robot as a pymunk body that collides with the walls and slides along them."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, NamedTuple
+
+import numpy as np
+import pymunk
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim._checks import require_int, require_positive
+
+if TYPE_CHECKING:
+    from realistic_indoor.sim.world import World
+
+__all__ = ["Motion", "Robot", "RobotConfig"]
+
+_ROBOT, _WALL = 1, 2  # pymunk collision types
+_MASS_KG = 10.0
+_COLLISION_SLOP_M = 0.002
+"""Overlap pymunk tolerates before pushing bodies apart (its default, 0.1, is 10 cm here)."""
+_COLLISION_BIAS = 1e-6
+"""Share of an overlap pymunk leaves after one second: a robot that touched a wall is pushed
+clear within a few sub-steps (pymunk's default leaves 0.2 %)."""
+
+
+@dataclass(frozen=True)
+class RobotConfig:
+    """The robot's body, limits and control rate.
+
+    Attributes:
+        radius_m: Radius of the disc (m); 0.25 m is a small search robot.
+        max_speed_m_s: Largest forward or backward speed (m/s).
+        max_turn_rate_rad_s: Largest turning rate (rad/s).
+        max_accel_m_s2: Largest change of speed per second (m/s2).
+        max_angular_accel_rad_s2: Largest change of turning rate per second (rad/s2).
+        control_hz: Commands per second; one :meth:`Robot.step` lasts ``1 / control_hz`` s.
+        substeps: Physics steps per control step. A sub-step must not move the robot more than
+            half its radius (no tunnelling through walls); the config checks it.
+    """
+
+    radius_m: float = 0.25
+    max_speed_m_s: float = 1.0
+    max_turn_rate_rad_s: float = 2.0
+    max_accel_m_s2: float = 2.0
+    max_angular_accel_rad_s2: float = 8.0
+    control_hz: float = 5.0
+    substeps: int = 4
+
+    def __post_init__(self) -> None:
+        for name, unit in (
+            ("radius_m", "m"),
+            ("max_speed_m_s", "m/s"),
+            ("max_turn_rate_rad_s", "rad/s"),
+            ("max_accel_m_s2", "m/s2"),
+            ("max_angular_accel_rad_s2", "rad/s2"),
+            ("control_hz", "Hz"),
+        ):
+            require_positive("RobotConfig", name, getattr(self, name), unit)
+        require_int("RobotConfig", "substeps", self.substeps, 1)
+        travel = self.max_speed_m_s / (self.control_hz * self.substeps)
+        if travel > self.radius_m / 2:
+            need = math.ceil(2 * self.max_speed_m_s / (self.control_hz * self.radius_m))
+            raise ConfigError(
+                f"RobotConfig: at {self.max_speed_m_s} m/s a physics sub-step moves the robot {travel:.3f} m, "
+                f"more than half its radius; use substeps >= {need} or a higher control_hz"
+            )
+
+    @property
+    def dt_s(self) -> float:
+        """Duration of one control step (s)."""
+        return 1.0 / self.control_hz
+
+
+class Motion(NamedTuple):
+    """What one control step did.
+
+    Attributes:
+        collided: Whether the robot touched a wall during the step.
+        distance_m: Straight-line distance between the poses before and after the step (m).
+    """
+
+    collided: bool
+    distance_m: float
+
+
+class Robot:
+    """A differential-drive disc in a pymunk space whose static shapes are the walls.
+
+    The space is built once per building (the walls never move); :meth:`reset` only moves the
+    robot. Each :meth:`step` applies the acceleration and speed limits to the command, then runs
+    ``substeps`` physics steps in which the body is driven at the limited speed along its
+    heading; walls stop it and it slides along them (no friction).
+
+    Args:
+        segments: ``(N, 2, 2)`` wall segments (m), e.g. :attr:`World.collision_segments`.
+        config: Body, limits and control rate.
+        wall_thickness_m: Thickness given to the wall segments (m).
+        pose: Initial ``(x, y, theta)`` (m, m, rad).
+    """
+
+    def __init__(
+        self,
+        segments: np.ndarray,
+        config: RobotConfig | None = None,
+        wall_thickness_m: float = 0.1,
+        pose: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    ) -> None:
+        self.config = config or RobotConfig()
+        self._space = pymunk.Space()
+        self._space.collision_slop = _COLLISION_SLOP_M
+        self._space.collision_bias = _COLLISION_BIAS
+        self._add_walls(np.asarray(segments, dtype=float).reshape(-1, 2, 2), wall_thickness_m / 2)
+        self._body = pymunk.Body(_MASS_KG, math.inf)
+        self._body.velocity_func = self._drive
+        self._wanted = (0.0, 0.0)
+        disc = pymunk.Circle(self._body, self.config.radius_m)
+        disc.friction = 0.0
+        disc.collision_type = _ROBOT
+        self._space.add(self._body, disc)
+        self._space.on_collision(_ROBOT, _WALL, pre_solve=self._on_contact)
+        self._touching = False
+        self.reset(pose)
+
+    @classmethod
+    def in_world(cls, world: World, config: RobotConfig | None = None) -> Robot:
+        """A robot among ``world``'s walls, at its start pose."""
+        return cls(world.collision_segments, config, world.config.wall_thickness_m, world.start_pose)
+
+    def _add_walls(self, segments: np.ndarray, radius_m: float) -> None:
+        static = self._space.static_body
+        shapes = []
+        for (ax, ay), (bx, by) in segments:
+            s = pymunk.Segment(static, (float(ax), float(ay)), (float(bx), float(by)), radius_m)
+            s.friction = 0.0
+            s.collision_type = _WALL
+            shapes.append(s)
+        self._space.add(*shapes)
+
+    def _drive(self, body: pymunk.Body, gravity: object, damping: float, dt: float) -> None:
+        # Runs before pymunk's contact solver: the solver then takes away any speed into a wall,
+        # and the next sub-step moves the body with what is left (it slides).
+        body.velocity = self._wanted
+
+    def _on_contact(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        self._touching = True
+
+    def reset(self, pose: tuple[float, float, float]) -> None:
+        """Put the robot at ``pose`` ``(x, y, theta)``, at rest."""
+        x, y, theta = (float(v) for v in pose)
+        self._body.position = (x, y)
+        self._body.velocity = (0.0, 0.0)
+        self._wanted = (0.0, 0.0)
+        self._space.reindex_shapes_for_body(self._body)
+        self._theta = math.remainder(theta, math.tau)
+        self._v = 0.0
+        self._w = 0.0
+
+    @property
+    def pose(self) -> tuple[float, float, float]:
+        """``(x, y, theta)``: position (m) and heading (rad, in ``[-pi, pi]``)."""
+        p = self._body.position
+        return (p.x, p.y, self._theta)
+
+    @property
+    def velocity(self) -> tuple[float, float]:
+        """``(v, w)``: current forward speed (m/s) and turning rate (rad/s), after limits."""
+        return (self._v, self._w)
+
+    def step(self, v_m_s: float, w_rad_s: float) -> Motion:
+        """Drive for one control step (``1 / control_hz`` s).
+
+        Args:
+            v_m_s: Commanded forward speed (m/s); clipped to the speed limit, and reached only
+                as fast as the acceleration limit allows.
+            w_rad_s: Commanded turning rate (rad/s, counter-clockwise); limited likewise.
+
+        Returns:
+            Whether a wall was touched, and the distance covered. Cost: about 10 microseconds
+            with the default 4 sub-steps.
+        """
+        c = self.config
+        dt = c.dt_s
+        self._v = _approach(self._v, _clip(v_m_s, c.max_speed_m_s), c.max_accel_m_s2 * dt)
+        self._w = _approach(self._w, _clip(w_rad_s, c.max_turn_rate_rad_s), c.max_angular_accel_rad_s2 * dt)
+        h = dt / c.substeps
+        body, space, v, w = self._body, self._space, self._v, self._w
+        start = body.position
+        theta = self._theta
+        self._touching = False
+        for _ in range(c.substeps):
+            mid = theta + 0.5 * w * h
+            self._wanted = (v * math.cos(mid), v * math.sin(mid))
+            space.step(h)
+            theta += w * h
+        self._theta = math.remainder(theta, math.tau)
+        end = body.position
+        return Motion(self._touching, math.hypot(end.x - start.x, end.y - start.y))
+
+
+def _clip(value: float, limit: float) -> float:
+    return max(-limit, min(limit, float(value)))
+
+
+def _approach(current: float, target: float, max_change: float) -> float:
+    return current + max(-max_change, min(max_change, target - current))

@@ -1,0 +1,201 @@
+"""A world: one building ready to simulate (raster, raycaster, reachable floor, start pose)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage
+
+from realistic_indoor.building.building import Building
+from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim._checks import require_positive
+from realistic_indoor.sim.raster import (
+    DEFAULT_MARGIN_M,
+    DEFAULT_RESOLUTION_M,
+    DEFAULT_WALL_THICKNESS_M,
+    FREE,
+    OccupancyRaster,
+    rasterize,
+)
+from realistic_indoor.sim.raycast import Raycaster, free_distance_cells
+
+__all__ = ["World", "WorldConfig"]
+
+Pose = tuple[float, float, float]
+
+_ENTRANCE_DEPTHS_M = np.arange(0.3, 3.0, 0.05)
+"""Distances from an entrance, inward, tried in turn for the start position (m)."""
+
+
+@dataclass(frozen=True)
+class WorldConfig:
+    """How a building becomes a world.
+
+    Attributes:
+        resolution_m: Side of a raster cell (m); the robot's map has the same cells.
+        wall_thickness_m: Thickness of the walls in the raster and in the physics (m).
+        margin_m: Outside band kept around the building in the raster (m).
+        start_clearance_m: Least distance from the start position to any wall (m); must exceed
+            the robot's radius.
+    """
+
+    resolution_m: float = DEFAULT_RESOLUTION_M
+    wall_thickness_m: float = DEFAULT_WALL_THICKNESS_M
+    margin_m: float = DEFAULT_MARGIN_M
+    start_clearance_m: float = 0.4
+
+    def __post_init__(self) -> None:
+        require_positive("WorldConfig", "resolution_m", self.resolution_m, "m")
+        require_positive("WorldConfig", "wall_thickness_m", self.wall_thickness_m, "m", allow_zero=True)
+        require_positive("WorldConfig", "margin_m", self.margin_m, "m", allow_zero=True)
+        require_positive("WorldConfig", "start_clearance_m", self.start_clearance_m, "m")
+
+
+class World:
+    """One building, prepared for simulation. Build one per building; reuse it across episodes.
+
+    Args:
+        building: The building.
+        config: Raster and start settings.
+        start_pose: ``(x, y, theta)`` where the robot starts (m, m, rad); by default
+            :meth:`default_start_pose`.
+
+    Raises:
+        ConfigError: If the building has no room, or the start pose is not on free floor at
+            least ``start_clearance_m`` from every wall.
+
+    Attributes:
+        building: The building.
+        config: The settings it was built with.
+        raster: Its occupancy raster (free, wall, outside).
+        raycaster: Raycaster on the raster (lasers, line of sight).
+        clearance_m: ``(H, W)`` float32 distance from each free cell to the nearest wall or
+            outside cell (m), 0 elsewhere.
+        start_pose: Where the robot starts.
+        reachable: ``(H, W)`` bool, the free cells connected to the start cell (4-neighbours):
+            the floor coverage is measured on.
+        reachable_area_m2: Area of the reachable cells (m2).
+        collision_segments: ``(N, 2, 2)`` wall segments for physics (m): the building's walls
+            plus a segment closing each exterior door, so the robot cannot leave.
+    """
+
+    def __init__(
+        self, building: Building, config: WorldConfig | None = None, start_pose: Pose | None = None
+    ) -> None:
+        self.building = building
+        self.config = config or WorldConfig()
+        c = self.config
+        self.raster: OccupancyRaster = rasterize(building, c.resolution_m, c.wall_thickness_m, c.margin_m)
+        dist = free_distance_cells(self.raster)
+        self.raycaster = Raycaster(self.raster, dist)
+        dist -= 0.5  # from a cell's centre to the obstacle cell's edge
+        np.maximum(dist, 0.0, out=dist)
+        dist *= c.resolution_m
+        self.clearance_m = dist
+        self.start_pose = self._checked_start(start_pose) if start_pose else self.default_start_pose()
+        self.reachable = self._reachable_from(self.start_pose)
+        self.reachable_area_m2 = float(np.count_nonzero(self.reachable)) * self.raster.cell_area_m2
+        self.collision_segments = _collision_segments(building)
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the world's arrays (bytes)."""
+        arrays = (self.raster.grid, self.clearance_m, self.reachable, self.collision_segments)
+        return int(sum(a.nbytes for a in arrays)) + self.raycaster.nbytes
+
+    def clearance_at(self, xy: np.ndarray | tuple[float, float]) -> np.ndarray:
+        """Distance (m) from points to the nearest wall or outside cell; 0 off the free floor."""
+        row, col = self.raster.world_to_cell(xy)
+        inside = self.raster.in_bounds(row, col)
+        out = np.zeros(np.shape(row), dtype=np.float32)
+        out[inside] = self.clearance_m[row[inside], col[inside]]
+        return out
+
+    def default_start_pose(self) -> Pose:
+        """The robot's default start: at the entrance, else in the middle of the largest space.
+
+        With an exterior door, the start is just inside the first one, facing inward: on the
+        door's centre line, at the first distance (from 0.3 m on) that is ``start_clearance_m``
+        clear of walls. Without one (real plans often have none), it is the point of the largest
+        hall (else the largest room): its centroid, or if that is not clear of walls, the point
+        farthest from its walls; facing +x. If neither fits, the
+        free cell farthest from any wall.
+        """
+        for door in self.building.entrances:
+            pose = self._inside_door(door)
+            if pose is not None:
+                return pose
+        pose = self._middle_of_largest_space()
+        if pose is not None:
+            return pose
+        return self._most_open_cell()
+
+    def _inside_door(self, door) -> Pose | None:
+        room = self.building.room_by_id.get(door.room_a)
+        if room is None:
+            return None
+        dx, dy = door.direction
+        normal = np.array([-dy, dx])
+        centre = np.array([door.x, door.y])
+        if not room.polygon.contains(_point(centre + 0.1 * normal)):
+            normal = -normal
+        points = centre + _ENTRANCE_DEPTHS_M[:, None] * normal
+        ok = np.flatnonzero(self.clearance_at(points) >= self.config.start_clearance_m)
+        if not len(ok):
+            return None
+        x, y = points[ok[0]]
+        return (float(x), float(y), math.atan2(normal[1], normal[0]))
+
+    def _middle_of_largest_space(self) -> Pose | None:
+        from shapely.ops import polylabel
+
+        rooms = sorted(self.building.rooms, key=lambda r: r.area, reverse=True)
+        halls = [r for r in rooms if r.label == SemanticLabel.HALL]
+        for room in halls[:1] + rooms[:1]:
+            for p in (room.polygon.centroid, polylabel(room.polygon, tolerance=self.config.resolution_m)):
+                if p.within(room.polygon) and self.clearance_at((p.x, p.y)) >= self.config.start_clearance_m:
+                    return (float(p.x), float(p.y), 0.0)
+        return None
+
+    def _most_open_cell(self) -> Pose:
+        best = np.unravel_index(np.argmax(self.clearance_m), self.clearance_m.shape)
+        if self.clearance_m[best] < self.config.start_clearance_m:
+            raise ConfigError(
+                f"no free floor is {self.config.start_clearance_m} m clear of walls in this building; "
+                "lower WorldConfig.start_clearance_m or use a finer resolution_m"
+            )
+        x, y = self.raster.cell_to_world(*best)
+        return (float(x), float(y), 0.0)
+
+    def _checked_start(self, pose: Pose) -> Pose:
+        x, y, theta = (float(v) for v in pose)
+        clear = float(self.clearance_at((x, y)))
+        if clear < self.config.start_clearance_m:
+            raise ConfigError(
+                f"start pose ({x:.2f}, {y:.2f}) is {clear:.2f} m from the nearest wall or off the "
+                f"floor; it must be on free floor at least {self.config.start_clearance_m} m from walls"
+            )
+        return (x, y, theta)
+
+    def _reachable_from(self, pose: Pose) -> np.ndarray:
+        labels, _ = ndimage.label(self.raster.grid == FREE)
+        row, col = self.raster.world_to_cell(pose[:2])
+        return labels == labels[row, col]
+
+
+def _point(xy: np.ndarray):
+    from shapely.geometry import Point
+
+    return Point(float(xy[0]), float(xy[1]))
+
+
+def _collision_segments(building: Building) -> np.ndarray:
+    doors = [np.array(d.segment) for d in building.entrances]
+    segments = np.concatenate(
+        [np.asarray(building.walls, dtype=float).reshape(-1, 2, 2), *(d[None] for d in doors)]
+    )
+    segments.setflags(write=False)
+    return segments

@@ -1,0 +1,96 @@
+import math
+
+import numpy as np
+import pytest
+import shapely
+from conftest import corridor_office
+
+from realistic_indoor.building import Building, Room
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.raster import FREE
+from realistic_indoor.sim.world import World, WorldConfig
+
+
+def test_world__starts_just_inside_the_entrance_facing_in(tiny_office):
+    w = World(tiny_office)
+    x, y, theta = w.start_pose
+    # entrance e1 is on the corridor's west wall (x = 0) at y = 1
+    assert y == pytest.approx(1.0) and 0.3 <= x <= 1.0
+    assert theta == pytest.approx(0.0)
+    assert w.clearance_at((x, y)) >= w.config.start_clearance_m
+
+
+def test_world__entrance_on_a_south_wall_faces_north(office):
+    x, y, theta = World(office).start_pose
+    assert x == pytest.approx(1.25) and 0.3 <= y <= 1.0 and theta == pytest.approx(math.pi / 2)
+
+
+def test_world__without_entrance_starts_in_the_middle_of_the_largest_hall():
+    rooms = (
+        Room.rectangle("h", "hall", "hall", (0, 0, 6, 4)),
+        Room.rectangle("big", "big", "office", (6, 0, 20, 10)),
+    )
+    w = World(Building("office", rooms, ()))
+    assert w.start_pose == pytest.approx((3.0, 2.0, 0.0), abs=0.06)
+
+
+def test_world__without_hall_starts_in_the_largest_room():
+    b = corridor_office(5, 2)
+    no_entrance = Building("office", b.rooms, tuple(d for d in b.doors if not d.is_exterior))
+    largest = max(b.rooms, key=lambda r: r.area)
+    assert largest.id == "spine"
+    assert World(no_entrance).start_pose == pytest.approx((*largest.polygon.centroid.coords[0], 0.0))
+
+
+def test_world__reachable_floor_is_the_free_floor_joined_to_the_start(tiny_office):
+    w = World(tiny_office)
+    assert w.reachable.sum() == (w.raster.grid == FREE).sum()
+    cut_off = Building("office", tiny_office.rooms, tiny_office.doors[:1] + tiny_office.doors[2:])
+    w2 = World(cut_off)
+    assert w2.reachable_area_m2 == pytest.approx(w.reachable_area_m2 - 20.0, abs=1.0)
+    assert not w2.reachable[w2.raster.world_to_cell((7.5, 4.0))]
+
+
+def test_world__collision_segments_close_the_entrances(tiny_office):
+    w = World(tiny_office)
+    lines = shapely.MultiLineString([list(map(tuple, s)) for s in w.collision_segments])
+    outline = shapely.union_all([r.polygon for r in tiny_office.rooms]).exterior
+    assert outline.difference(lines.buffer(1e-6)).length == pytest.approx(0.0, abs=1e-6)
+
+
+def test_world__explicit_start_pose_is_checked(tiny_office):
+    assert World(tiny_office, start_pose=(2.5, 4.0, 1.0)).start_pose == (2.5, 4.0, 1.0)
+    with pytest.raises(ConfigError, match="start pose"):
+        World(tiny_office, start_pose=(5.0, 4.0, 0.0))  # on the wall between a and b
+    with pytest.raises(ConfigError, match="start pose"):
+        World(tiny_office, start_pose=(-3.0, 4.0, 0.0))  # outside
+
+
+def test_world__clearance_is_the_distance_to_the_nearest_wall(office):
+    w = World(office)
+    # middle of a 4 m x 5 m office: 2 m to the side walls, less half a wall (0.05 m)
+    assert float(w.clearance_at((4.5, 2.5))) == pytest.approx(1.95, abs=0.05)
+    assert float(w.clearance_at((-10.0, 0.0))) == 0.0
+
+
+def test_world__memory_is_reported(office):
+    w = World(office)
+    assert w.nbytes >= w.raster.grid.nbytes * 6
+
+
+@pytest.mark.parametrize(
+    "kwargs", [{"resolution_m": 0}, {"start_clearance_m": -1}, {"wall_thickness_m": -0.1}]
+)
+def test_world_config__bad_values_raise_config_error(kwargs):
+    with pytest.raises(ConfigError, match="WorldConfig"):
+        WorldConfig(**kwargs)
+
+
+def test_world__real_plan_gets_a_start_and_reachable_floor(real_plans_dir):
+    from realistic_indoor.io import load
+
+    path = sorted((real_plans_dir / "office").glob("*.xml"))[0]
+    w = World(load(path))
+    assert w.reachable_area_m2 > 0.5 * w.building.area
+    assert w.clearance_at(w.start_pose[:2]) >= w.config.start_clearance_m
+    assert np.isfinite(w.start_pose).all()

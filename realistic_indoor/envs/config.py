@@ -15,6 +15,7 @@ from realistic_indoor.sim._checks import require_int, require_range
 from realistic_indoor.sim.lidar import LidarConfig
 from realistic_indoor.sim.mapping import LocalMapConfig
 from realistic_indoor.sim.robot import RobotConfig
+from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
 __all__ = ["BUILDING_TYPES", "EnvConfig"]
@@ -29,6 +30,7 @@ _SUBCONFIGS = {
     "lidar": LidarConfig,
     "local_map": LocalMapConfig,
     "rewards": RewardWeights,
+    "victims": VictimConfig,
 }
 
 
@@ -57,6 +59,8 @@ class EnvConfig:
         local_map: Side (pixels, >= 36 for stable-baselines3's ``CnnPolicy``) and pixel size
             (m) of the egocentric map image.
         rewards: Weight of each reward term.
+        victims: Number of victims, the rooms they may be in, and the victim sensor's range
+            (m) and field of view (rad); search environments only.
         coverage_target: Share of the reachable floor whose observation ends an exploration
             episode, in ``(0, 1]``.
         max_steps: Control steps after which an episode is truncated (``1 / robot.control_hz``
@@ -76,6 +80,7 @@ class EnvConfig:
     lidar: LidarConfig = field(default_factory=LidarConfig)
     local_map: LocalMapConfig = field(default_factory=LocalMapConfig)
     rewards: RewardWeights = field(default_factory=RewardWeights)
+    victims: VictimConfig = field(default_factory=VictimConfig)
     coverage_target: float = 0.9
     max_steps: int = 1000
     action_type: str = "continuous"
@@ -122,17 +127,29 @@ class EnvConfig:
     def replace(self, **changes: Any) -> EnvConfig:
         """A copy with some fields changed (checked again).
 
-        Setting one building source (``building``, ``plan_path`` or ``generator``) clears the
-        others, so a preset's source can be overridden by any of them.
+        A sub-config (``world``, ``robot``, ``lidar``, ``local_map``, ``rewards``, ``victims``)
+        may be given as a mapping of the fields to change in it, e.g.
+        ``replace(lidar={"n_beams": 64})``. Setting one building source (``building``,
+        ``plan_path`` or ``generator``) clears the others, so that a preset's source can be
+        overridden by any of them.
 
         Raises:
             ConfigError: If a field name is unknown or a value is invalid.
         """
         known = {f.name for f in fields(self)}
-        unknown = sorted(set(changes) - known)
-        if unknown:
-            raise ConfigError(f"EnvConfig has no field {unknown[0]!r}; fields: {', '.join(sorted(known))}")
+        _require_known("EnvConfig", changes, known)
+        for name, cls in _SUBCONFIGS.items():
+            if isinstance(changes.get(name), Mapping):
+                current = getattr(self, name)
+                _require_known(cls.__name__, changes[name], {f.name for f in fields(cls)})
+                changes[name] = replace(current, **changes[name])
         sources = {"building", "plan_path", "generator"}
         if sources & {k for k, v in changes.items() if v is not None}:
             changes = {**dict.fromkeys(sources), **changes}
         return replace(self, **changes)
+
+
+def _require_known(owner: str, changes: Mapping[str, Any], known: set[str]) -> None:
+    unknown = sorted(set(changes) - known)
+    if unknown:
+        raise ConfigError(f"{owner} has no field {unknown[0]!r}; fields: {', '.join(sorted(known))}")

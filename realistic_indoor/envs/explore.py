@@ -204,7 +204,8 @@ class ExploreEnv(gym.Env):
             return None
         from realistic_indoor.envs.render import top_view
 
-        return top_view(self._sim, **self._render_extras())
+        victims = self.victims
+        return top_view(self._sim, *victims) if victims is not None else top_view(self._sim)
 
     # -- state a user may inspect --------------------------------------------------------------------
     @property
@@ -216,6 +217,11 @@ class ExploreEnv(gym.Env):
     def simulation(self) -> Simulation:
         """The world, robot, laser and map of the current episode (read them, don't change them)."""
         return self._sim
+
+    @property
+    def victims(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """Positions and found flags of the victims; ``None``: exploration has none."""
+        return None
 
     # -- hooks a task overrides ------------------------------------------------------------------------
     def _make_observations(self) -> dict[str, Any]:
@@ -238,9 +244,6 @@ class ExploreEnv(gym.Env):
             "path_length_m": sim.path_length_m,
             "collisions": sim.collisions,
         }
-
-    def _render_extras(self) -> dict[str, Any]:
-        return {}
 
     def _observe(self) -> dict[str, np.ndarray]:
         return {name: part.observe(self._sim) for name, part in self._observations.items()}

@@ -55,3 +55,14 @@ def toy_generator() -> ToyOffice:
 def toy_building() -> Building:
     """One fixed small office."""
     return ToyOffice(jitter_m=0.0)(np.random.default_rng(0))
+
+
+def make_env(env_id: str, **kwargs):
+    """``gym.make(env_id)`` on small toy buildings with a short step limit, for fast tests."""
+    import gymnasium as gym
+
+    import realistic_indoor.envs  # noqa: F401  (registers the ids)
+
+    kwargs.setdefault("generator", ToyOffice())
+    kwargs.setdefault("max_steps", 50)
+    return gym.make(env_id, **kwargs)

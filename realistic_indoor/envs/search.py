@@ -1,0 +1,153 @@
+"""Victim search: explore a building until the victim sensor has seen every victim."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from gymnasium import spaces
+
+from realistic_indoor.envs.explore import ExploreEnv
+from realistic_indoor.envs.observations import explore_observations
+from realistic_indoor.envs.rewards import reward_terms
+from realistic_indoor.envs.simulation import Simulation, StepOutcome
+from realistic_indoor.sim.victims import VictimSensor, place_victims, relative_polar
+
+__all__ = ["SearchEnv", "VictimObservation"]
+
+
+class VictimObservation:
+    """What the victim sensor sees: ``(3 * n_victims,)`` float32, nearest victim first.
+
+    Entries ``3i`` to ``3i + 2`` describe the ``i``-th nearest victim in view: ``(1, range /
+    sensor_range_m, bearing / pi)``, bearing 0 straight ahead and positive to the left;
+    entries beyond the victims in view are zeros. (Flat, as stable-baselines3's
+    ``MultiInputPolicy`` wants vectors.)
+    """
+
+    def __init__(self, env: SearchEnv) -> None:
+        c = env.config.victims
+        self._env = env
+        self._scale = np.array([1.0 / c.sensor_range_m, 1.0 / np.pi])
+        low = np.tile(np.array([0.0, 0.0, -1.0], np.float32), c.n_victims)
+        self.space = spaces.Box(low, np.ones_like(low), (3 * c.n_victims,), np.float32)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The victims in view (a new array)."""
+        out = np.zeros((len(self._env._victims_xy), 3), dtype=np.float32)
+        seen = self._env._in_view
+        if seen.any():
+            ranges, bearings = relative_polar(sim.robot.pose, self._env._victims_xy[seen])
+            order = np.argsort(ranges, kind="stable")
+            rows = np.stack([ranges[order], bearings[order]], axis=1) * self._scale
+            out[: len(order), 0] = 1.0
+            out[: len(order), 1:] = np.clip(rows, (0.0, -1.0), (1.0, 1.0))
+        return out.ravel()
+
+
+class SearchEnv(ExploreEnv):
+    """Search a building for victims with a laser-equipped robot and a victim sensor.
+
+    ## Description
+
+    The exploration task of :class:`~realistic_indoor.envs.explore.ExploreEnv`, with
+    ``victims.n_victims`` victims (3 by default) placed at random in the rooms of the building
+    (not in corridors or halls by default, at least 0.3 m from walls). A victim is found the
+    first time the victim sensor sees it: within ``victims.sensor_range_m`` (3 m), within
+    ``victims.sensor_fov_rad`` (120 degrees) of the heading, and in line of sight. The goal
+    is to find every victim as fast as possible.
+
+    ## Action Space
+
+    As :class:`~realistic_indoor.envs.explore.ExploreEnv`: ``Box(-1, 1, (2,))`` scaled to
+    ``(v m/s, w rad/s)``, or ``Discrete(6)`` with ``action_type="discrete"``.
+
+    ## Observation Space
+
+    A ``Dict`` with the keys of the exploration environment (`scan`, `local_map`, `velocity`,
+    `pose`) and:
+
+    | Key       | Shape            | Dtype   | Min          | Max       | Meaning                                   |
+    |-----------|------------------|---------|--------------|-----------|-------------------------------------------|
+    | `victims` | `(3 n_victims,)` | float32 | (0, 0, -1, ...) | (1, 1, 1, ...) | victims in view, nearest first, three numbers each: 1, range / sensor range, bearing / pi (0 ahead, > 0 left); zeros for none |
+
+    ## Rewards
+
+    The exploration terms (`new_area` in m2, `collision`, `time`) plus:
+
+    | Term     | Value                          | Default weight |
+    |----------|--------------------------------|----------------|
+    | `victim` | victims found in this step     | 5.0            |
+
+    ## Starting State
+
+    As in exploration: at rest inside the entrance (or in the largest hall of a plan without
+    one). Victims in view from the start count as found, without reward.
+
+    ## Episode End
+
+    1. Termination: every victim has been found.
+    2. Truncation: ``max_steps`` control steps have passed.
+
+    ## Arguments
+
+    Those of :class:`~realistic_indoor.envs.explore.ExploreEnv` (every
+    :class:`~realistic_indoor.envs.config.EnvConfig` field), of which ``victims``
+    (:class:`~realistic_indoor.sim.victims.VictimConfig`: number, allowed rooms, clearance,
+    sensor range and field of view) is used by search only; ``coverage_target`` is not used.
+    ``info`` adds ``victims_found`` and ``victims_total``.
+
+    ```python
+    >>> import gymnasium as gym
+    >>> import realistic_indoor.envs
+    >>> env = gym.make("OfficeSearch-v0", area_m2=400.0, victims={"n_victims": 2})
+    >>> obs, info = env.reset(seed=0)
+    >>> obs["victims"].shape, info["victims_total"]
+    ((6,), 2)
+
+    ```
+
+    ## Version History
+
+    * v0: Initial version.
+    """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._sensor = VictimSensor(self.config.victims)
+        n = self.config.victims.n_victims
+        self._victims_xy = np.zeros((n, 2))
+        self._found = np.zeros(n, dtype=bool)
+        self._in_view = np.zeros(n, dtype=bool)
+
+    @property
+    def victims(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(positions (N, 2) m, found (N,) bool)`` of this episode's victims (copies)."""
+        return self._victims_xy.copy(), self._found.copy()
+
+    def _make_observations(self) -> dict[str, Any]:
+        return {**explore_observations(self.config), "victims": VictimObservation(self)}
+
+    def _start_episode(self) -> None:
+        self._victims_xy = place_victims(self._sim.world, self.np_random, self.config.victims)
+        self._look()
+        self._found = self._in_view.copy()
+
+    def _look(self) -> None:
+        sim = self._sim
+        self._in_view = self._sensor.in_view(sim.world.raycaster, sim.robot.pose, self._victims_xy)
+
+    def _reward_terms(self, outcome: StepOutcome) -> dict[str, float]:
+        self._look()
+        new = self._in_view & ~self._found
+        self._found |= new
+        return reward_terms(outcome.new_area_m2, outcome.collided, int(new.sum()))
+
+    def _terminated(self) -> bool:
+        return bool(self._found.all())
+
+    def _info(self) -> dict[str, Any]:
+        info = super()._info()
+        info["victims_found"] = int(self._found.sum())
+        info["victims_total"] = len(self._found)
+        return info

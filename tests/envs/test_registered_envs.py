@@ -1,0 +1,113 @@
+"""Every registered environment, MiniGrid style: API checks, determinism, pickling, limits, vectors."""
+
+from __future__ import annotations
+
+import pickle
+import warnings
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from conftest import make_env
+from gymnasium.utils.env_checker import check_env, data_equivalence
+
+from realistic_indoor.envs import PRESETS
+
+ALL_IDS = sorted(PRESETS)
+
+
+def _rollout(env: gym.Env, seed: int, n_steps: int) -> list:
+    env.action_space.seed(seed)
+    out = [env.reset(seed=seed)]
+    for _ in range(n_steps):
+        out.append(env.step(env.action_space.sample()))
+    return out
+
+
+def test_registry__holds_every_preset_with_its_step_limit():
+    for env_id, preset in PRESETS.items():
+        spec = gym.spec(env_id)
+        assert spec.max_episode_steps == preset.max_episode_steps == preset.kwargs["max_steps"]
+    assert set(ALL_IDS) == {
+        f"{t}{task}-v0" for t in ("Office", "School", "House", "Random") for task in ("Explore", "Search")
+    }
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__passes_gymnasium_check_env_without_warnings(env_id):
+    env = make_env(env_id)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_env(env.unwrapped)
+    env.close()
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__passes_stable_baselines3_check_env(env_id):
+    from stable_baselines3.common.env_checker import check_env as sb3_check_env
+
+    env = make_env(env_id)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sb3_check_env(env.unwrapped, warn=True)
+    env.close()
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__same_seed_gives_the_same_rollout(env_id):
+    a = _rollout(make_env(env_id), seed=7, n_steps=30)
+    b = _rollout(make_env(env_id), seed=7, n_steps=30)
+    assert data_equivalence(a, b, exact=True)
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__new_seed_gives_a_new_building(env_id):
+    env = make_env(env_id)
+    env.reset(seed=1)
+    first = env.unwrapped.building
+    env.reset(seed=2)
+    assert env.unwrapped.building != first
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__pickled_copy_continues_identically(env_id):
+    env = make_env(env_id)
+    _rollout(env, seed=3, n_steps=5)
+    copy = pickle.loads(pickle.dumps(env))
+    actions = [env.action_space.sample() for _ in range(10)]
+    assert data_equivalence([env.step(a) for a in actions], [copy.step(a) for a in actions], exact=True)
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__truncates_exactly_at_the_step_limit(env_id):
+    env = make_env(env_id, max_steps=7, coverage_target=1.0)
+    env.reset(seed=0)
+    ends = [env.step(np.zeros(2, np.float32))[2:4] for _ in range(7)]
+    assert ends[:-1] == [(False, False)] * 6
+    assert ends[-1] == (False, True)
+
+
+@pytest.mark.parametrize("mode", ["sync", "async"])
+@pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
+def test_env__runs_in_gym_make_vec(env_id, mode):
+    from conftest import ToyOffice
+
+    envs = gym.make_vec(env_id, num_envs=2, vectorization_mode=mode, generator=ToyOffice(), max_steps=10)
+    obs, _ = envs.reset(seed=0)
+    for _ in range(15):  # past the step limit: sub-environments reset on their own
+        obs, reward, *_ = envs.step(envs.action_space.sample())
+    assert obs["local_map"].shape == (2, *envs.single_observation_space["local_map"].shape)
+    assert reward.shape == (2,) and np.isfinite(reward).all()
+    assert envs.single_observation_space.contains({k: v[0] for k, v in obs.items()})
+    envs.close()
+
+
+@pytest.mark.parametrize("env_id", ALL_IDS)
+def test_env__renders_an_rgb_top_view(env_id):
+    env = make_env(env_id, render_mode="rgb_array")
+    env.reset(seed=0)
+    env.step(env.action_space.sample())
+    image = env.render()
+    raster = env.unwrapped.simulation.world.raster
+    assert image.dtype == np.uint8 and image.shape == (*raster.shape, 3)
+    assert len(np.unique(image.reshape(-1, 3), axis=0)) > 4  # plan, map, robot, rays at least

@@ -19,13 +19,16 @@ UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
 """States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
 T_WALL, T_OUTSIDE, T_FREE, T_REACHABLE = 0, 1, 2, 3
 """What the ground truth lets a beam mark in a cell: free only if ``>= T_FREE``."""
+STRIP = 32
+"""Cells per row strip: ``todo[r, c // STRIP]`` counts the free cells of a strip still unknown,
+so a span walks past a fully observed strip in one step (most of a scan covers known floor)."""
 _NUDGE = 1e-3
 """Distance (cells) past a beam's end at which the wall cell it hit is looked up."""
 
 
 @njit(cache=True, nogil=True)
 def integrate_scan(
-    grid, pooled, k, targets, px, py, cos_h, sin_h, cos_off, sin_off, range_m, kind, scale, closed
+    grid, pooled, k, targets, todo, px, py, cos_h, sin_h, cos_off, sin_off, range_m, kind, scale, closed
 ):  # pragma: no cover - compiled
     """Mark what one scan saw; return the number of reachable cells observed for the first time.
 
@@ -45,11 +48,11 @@ def integrate_scan(
     if n > 1:
         vx, vy = _fan_outline(px, py, dxs, dys, ts, closed)
         rows, c0, c1 = _polygon_spans(vx, vy, h, w)
-        new = _mark_spans(grid, pooled, k, targets, rows, c0, c1)
+        new = _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1)
     else:
         new = 0
     rows, c0, c1 = _beam_spans(px, py, dxs, dys, ts, closed, h, w)
-    new += _mark_spans(grid, pooled, k, targets, rows, c0, c1)
+    new += _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1)
     for i in range(n):
         if kind[i] == WALL:
             c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
@@ -61,18 +64,37 @@ def integrate_scan(
 
 
 @njit(cache=True, nogil=True)
-def _mark_spans(grid, pooled, k, targets, rows, c0, c1):  # pragma: no cover - compiled
+def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cover - compiled
     new = 0
     for i in range(rows.shape[0]):
         r = rows[i]
-        for c in range(c0[i], c1[i]):
+        c = c0[i]
+        end = c1[i]
+        while c < end:
+            if c % STRIP == 0 and c + STRIP <= end and todo[r, c // STRIP] == 0:
+                c += STRIP
+                continue
             if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
                 grid[r, c] = MAPPED_FREE
+                todo[r, c // STRIP] -= 1
                 if pooled[r // k, c // k] == UNKNOWN:
                     pooled[r // k, c // k] = MAPPED_FREE
                 if targets[r, c] == T_REACHABLE:
                     new += 1
+            c += 1
     return new
+
+
+@njit(cache=True, nogil=True)
+def free_per_strip(targets):  # pragma: no cover - compiled
+    """Number of free cells (``targets >= T_FREE``) in each row strip of ``STRIP`` cells."""
+    h, w = targets.shape
+    out = np.zeros((h, (w + STRIP - 1) // STRIP), dtype=np.int32)
+    for r in range(h):
+        for c in range(w):
+            if targets[r, c] >= T_FREE:
+                out[r, c // STRIP] += 1
+    return out
 
 
 @njit(cache=True, nogil=True)
@@ -222,10 +244,15 @@ def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no co
     s = out.shape[0]
     half = (s - 1) / 2.0
     unknown = lut[UNKNOWN]
+    col_dx = step * sin_h  # one pixel to the right: the heading turned clockwise
+    col_dy = -step * cos_h
     for i in range(s):
         ahead = (half - i) * step
+        x = px + ahead * cos_h - half * col_dx
+        y = py + ahead * sin_h - half * col_dy
         for j in range(s):
-            left = (half - j) * step
-            c = math.floor(px + ahead * cos_h - left * sin_h)
-            r = math.floor(py + ahead * sin_h + left * cos_h)
+            c = math.floor(x)
+            r = math.floor(y)
             out[i, j] = lut[pooled[r, c]] if 0 <= r < h and 0 <= c < w else unknown
+            x += col_dx
+            y += col_dy

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 
 from realistic_indoor.sim._checks import require_int, require_positive, require_range
 from realistic_indoor.sim.raster import WALL
@@ -89,6 +90,7 @@ class Lidar:
         self.offsets_rad = offsets
         self._cos = np.cos(offsets)
         self._sin = np.sin(offsets)
+        self._no_noise = np.zeros(0)
 
     def scan(
         self, raycaster: Raycaster, pose: tuple[float, float, float], rng: np.random.Generator | None = None
@@ -108,11 +110,19 @@ class Lidar:
         true = RayHits(np.empty(n, np.float32), np.empty(n, np.uint8))
         x, y, theta = pose
         raycaster.cast_into(x, y, theta, self._cos, self._sin, c.max_range_m, true)
-        ranges = np.where(true.kind == WALL, true.range_m, np.float32(c.max_range_m))
-        if rng is not None and c.noise_std_m > 0:
-            returned = true.kind == WALL
-            noise = rng.normal(0.0, c.noise_std_m, n)
-            ranges = np.where(returned, np.clip(ranges + noise, 0.0, c.max_range_m), ranges)
-        return Scan(
-            (float(x), float(y), float(theta)), ranges.astype(np.float32, copy=False), true, self.offsets_rad
-        )
+        noise = rng.standard_normal(n) if rng is not None and c.noise_std_m > 0 else self._no_noise
+        ranges = np.empty(n, np.float32)
+        _readings(true.range_m, true.kind, noise, c.noise_std_m, c.max_range_m, ranges)
+        return Scan((float(x), float(y), float(theta)), ranges, true, self.offsets_rad)
+
+
+@njit(cache=True, nogil=True)
+def _readings(true_m, kind, noise, noise_std_m, max_range_m, out):  # pragma: no cover - compiled
+    """Readings: returned beams get their range plus noise, clipped to the range; others read max."""
+    noisy = noise.shape[0] > 0
+    for i in range(true_m.shape[0]):
+        if kind[i] == WALL:
+            r = true_m[i] + noise_std_m * noise[i] if noisy else true_m[i]
+            out[i] = min(max(r, 0.0), max_range_m)
+        else:
+            out[i] = max_range_m

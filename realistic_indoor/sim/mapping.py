@@ -17,6 +17,7 @@ from realistic_indoor.sim._map_kernels import (
     T_REACHABLE,
     T_WALL,
     UNKNOWN,
+    free_per_strip,
     integrate_scan,
     render_local,
 )
@@ -86,6 +87,8 @@ class RobotMap:
         self._res = world.raster.resolution_m
         self._x0, self._y0 = world.raster.origin
         self._targets = _targets(world)
+        self._todo_at_start = free_per_strip(self._targets)
+        self._todo = self._todo_at_start.copy()
         self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
         self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
         h, w = world.raster.shape
@@ -119,12 +122,14 @@ class RobotMap:
     @property
     def nbytes(self) -> int:
         """Memory held by the map (bytes)."""
-        return int(self._grid.nbytes + self._pooled.nbytes + self._targets.nbytes)
+        arrays = (self._grid, self._pooled, self._targets, self._todo, self._todo_at_start)
+        return int(sum(a.nbytes for a in arrays))
 
     def reset(self) -> None:
         """Forget everything: every cell unknown, coverage 0."""
         self._grid.fill(UNKNOWN)
         self._pooled.fill(UNKNOWN)
+        self._todo[...] = self._todo_at_start
         self._observed = 0
 
     def update(self, scan: Scan) -> float:
@@ -146,6 +151,7 @@ class RobotMap:
             self._pooled,
             self._pool,
             self._targets,
+            self._todo,
             (x - self._x0) / self._res,
             (y - self._y0) / self._res,
             math.cos(theta),

@@ -19,8 +19,6 @@ from realistic_indoor.errors import ConfigError
 
 __all__ = ["ExploreEnv"]
 
-_RESET_OPTIONS = frozenset({"building"})
-
 
 class ExploreEnv(gym.Env):
     """Explore a building with a differential-drive robot, a 2D laser scanner and a map.
@@ -130,6 +128,8 @@ class ExploreEnv(gym.Env):
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 5}
+    reset_options: frozenset[str] = frozenset({"building"})
+    """Keys ``reset(options=...)`` accepts."""
 
     def __init__(
         self, config: EnvConfig | None = None, render_mode: str | None = None, **overrides: Any
@@ -161,10 +161,10 @@ class ExploreEnv(gym.Env):
         """Start an episode in a new building (drawn from the seed) or in ``options["building"]``."""
         super().reset(seed=seed)
         options = options or {}
-        unknown = sorted(set(options) - _RESET_OPTIONS)
+        unknown = sorted(set(options) - self.reset_options)
         if unknown:
             raise ConfigError(
-                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(_RESET_OPTIONS))}"
+                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(self.reset_options))}"
             )
         building = options.get("building")
         if building is None:
@@ -174,7 +174,7 @@ class ExploreEnv(gym.Env):
         self._sim.load(building)
         self._sim.reset(self.np_random)
         self._steps = 0
-        self._start_episode()
+        self._start_episode(options)
         return self._observe(), self._info()
 
     def step(
@@ -227,7 +227,7 @@ class ExploreEnv(gym.Env):
     def _make_observations(self) -> dict[str, Any]:
         return explore_observations(self.config)
 
-    def _start_episode(self) -> None:
+    def _start_episode(self, options: dict[str, Any]) -> None:
         """Set up what a task adds to an episode (nothing for exploration)."""
 
     def _reward_terms(self, outcome: StepOutcome) -> dict[str, float]:

@@ -11,6 +11,7 @@ from realistic_indoor.envs.explore import ExploreEnv
 from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.rewards import reward_terms
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
+from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.victims import VictimSensor, place_victims, relative_polar
 
 __all__ = ["SearchEnv", "VictimObservation"]
@@ -95,7 +96,9 @@ class SearchEnv(ExploreEnv):
     :class:`~realistic_indoor.envs.config.EnvConfig` field), of which ``victims``
     (:class:`~realistic_indoor.sim.victims.VictimConfig`: number, allowed rooms, clearance,
     sensor range and field of view) is used by search only; ``coverage_target`` is not used.
-    ``info`` adds ``victims_found`` and ``victims_total``.
+    ``info`` adds ``victims_found`` and ``victims_total``. ``reset(options={"victims": xy})``
+    puts the episode's victims at the ``(n_victims, 2)`` positions ``xy`` (m) instead of
+    drawing them (with ``"building"``, a fixed scenario).
 
     ```python
     >>> import gymnasium as gym
@@ -111,6 +114,8 @@ class SearchEnv(ExploreEnv):
 
     * v0: Initial version.
     """
+
+    reset_options = frozenset({"building", "victims"})
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
@@ -128,10 +133,23 @@ class SearchEnv(ExploreEnv):
     def _make_observations(self) -> dict[str, Any]:
         return {**explore_observations(self.config), "victims": VictimObservation(self)}
 
-    def _start_episode(self) -> None:
-        self._victims_xy = place_victims(self._sim.world, self.np_random, self.config.victims)
+    def _start_episode(self, options: dict[str, Any]) -> None:
+        if options.get("victims") is not None:
+            self._victims_xy = self._given_victims(options["victims"])
+        else:
+            self._victims_xy = place_victims(self._sim.world, self.np_random, self.config.victims)
         self._look()
         self._found = self._in_view.copy()
+
+    def _given_victims(self, victims: object) -> np.ndarray:
+        xy = np.array(victims, dtype=float)
+        n = self.config.victims.n_victims
+        if xy.shape != (n, 2) or not np.isfinite(xy).all():
+            raise ConfigError(
+                f"reset option victims must be {n} finite (x, y) positions in metres (victims.n_victims), "
+                f"got an array of shape {xy.shape}"
+            )
+        return xy
 
     def _look(self) -> None:
         sim = self._sim

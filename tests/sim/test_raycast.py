@@ -47,15 +47,26 @@ def _free_poses(raster, reference, rng, n, clearance=0.2):
 
 BUILDINGS = {
     "tiny office": None,
+    "real office ED21 (slanted walls)": "office/ED21.xml",
     "axis-aligned": lambda: corridor_office(3, 1),
     "rotated 30 deg": lambda: rotated(corridor_office(3, 1), math.radians(30), (0.31, -0.17)),
     "rotated 7 deg": lambda: rotated(corridor_office(2, 2), math.radians(7), (0.0, 0.0)),
 }
 
 
+def _building(source, request):
+    if source is None:
+        return request.getfixturevalue("tiny_office")
+    if isinstance(source, str):
+        from realistic_indoor.io import load
+
+        return load(request.getfixturevalue("real_plans_dir") / source)
+    return source()
+
+
 @pytest.mark.parametrize("name", BUILDINGS)
 def test_raycaster__agrees_with_exact_geometry_within_one_cell(name, rng, request):
-    building = request.getfixturevalue("tiny_office") if BUILDINGS[name] is None else BUILDINGS[name]()
+    building = _building(BUILDINGS[name], request)
     raster = rasterize(building, RES, THICKNESS)
     rc = Raycaster(raster)
     ref = Reference(building)

@@ -124,9 +124,24 @@ def _safety_run(world, rng, n_steps, config):
     return poses
 
 
+def _generated_office(request):
+    generator = pytest.importorskip("realistic_indoor.generator")
+    if not hasattr(generator, "generate"):
+        pytest.skip("realistic_indoor.generator.generate is not available yet")
+    return generator.generate("office", area_m2=800, seed=3)
+
+
+def _real_school(request):
+    from realistic_indoor.io import load
+
+    return load(request.getfixturevalue("real_plans_dir") / "school" / "Vipiteno2_updated.xml")
+
+
 SAFETY_BUILDINGS = {
-    "corridor office": lambda: corridor_office(4, 2),
-    "rotated office": lambda: rotated(corridor_office(3, 2), math.radians(23), (1.0, 2.0)),
+    "corridor office": lambda request: corridor_office(4, 2),
+    "rotated office": lambda request: rotated(corridor_office(3, 2), math.radians(23), (1.0, 2.0)),
+    "real school": _real_school,
+    "generated office": _generated_office,
 }
 
 
@@ -134,8 +149,8 @@ SAFETY_BUILDINGS = {
 @pytest.mark.parametrize(
     "config", [RobotConfig(), RobotConfig(max_speed_m_s=2.0, substeps=5)], ids=["default", "fast"]
 )
-def test_robot__never_leaves_the_building_nor_enters_a_wall(name, config, rng):
-    building = SAFETY_BUILDINGS[name]()
+def test_robot__never_leaves_the_building_nor_enters_a_wall(name, config, rng, request):
+    building = SAFETY_BUILDINGS[name](request)
     poses = _safety_run(World(building), rng, 8000, config)
     walls = shapely.MultiLineString([list(map(tuple, s)) for s in building.walls])
     floor = shapely.union_all([r.polygon for r in building.rooms] + [door_gap(d) for d in building.doors])

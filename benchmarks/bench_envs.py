@@ -26,20 +26,12 @@ import time
 from pathlib import Path
 
 import gymnasium as gym
+from bench_sim import PLAN_FILES, PLANS  # the simulator benchmark's plans, spanning sizes
 
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
 from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.simulation import Simulation
 
-ROOT = Path(__file__).resolve().parents[1]
-PLANS = ROOT.parent / "shared" / "data" / "real_floorplans"
-PLAN_FILES = (
-    "school/Borchen4_updated.xml",
-    "office/Milano-1.xml",
-    "office/AtlanticSuites.xml",
-    "school/Neulengbach1_updated.xml",
-    "school/virginia_cross_updated.xml",
-)
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
 MEMORY_ENVS = 8
 

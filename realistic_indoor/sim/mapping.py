@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim._checks import require_int, require_positive
 from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
@@ -97,6 +98,7 @@ class RobotMap:
         self._observed = 0
         self._offsets: np.ndarray | None = None
         self._cos = self._sin = np.zeros(0)
+        self._closed = False
         self._lut = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 
     @property
@@ -140,8 +142,8 @@ class RobotMap:
 
         Returns:
             Area of reachable floor observed for the first time (m2): the exploration reward.
-            Summed over an episode it equals :attr:`observed_area_m2`. Cost: about 1 ns per cell
-            the scan's fan covers (some 10-40 microseconds in an office).
+            Summed over an episode it equals :attr:`observed_area_m2`. Cost: about 1 ns per
+            not yet observed cell the scan's fan covers; 20-50 microseconds along a drive.
         """
         if scan.offsets_rad is not self._offsets:
             self._set_beams(scan.offsets_rad)
@@ -179,11 +181,19 @@ class RobotMap:
                 observation buffer); a new one if ``None``.
 
         Returns:
-            The image. Cost: about 5 microseconds for 64 x 64 pixels.
+            The image. Cost: about 8 microseconds for 64 x 64 pixels.
+
+        Raises:
+            ConfigError: If ``out`` is not a C-contiguous ``(size_px, size_px)`` uint8 array.
         """
         s = self.local.size_px
         if out is None:
             out = np.empty((s, s), dtype=np.uint8)
+        elif out.shape != (s, s) or out.dtype != np.uint8 or not out.flags.c_contiguous:
+            raise ConfigError(
+                f"local_view(out=...) needs a C-contiguous ({s}, {s}) uint8 array, "
+                f"got {out.dtype} {out.shape}"
+            )
         x, y, theta = pose
         cell = self._res * self._pool
         render_local(

@@ -149,7 +149,11 @@ def test_local_view__fills_a_given_buffer(tiny_world):
     m = RobotMap(tiny_world, LocalMapConfig(size_px=16, resolution_m=0.2))
     buffer = np.zeros((1, 16, 16), dtype=np.uint8)
     out = m.local_view((2.5, 4.0, 0.0), out=buffer[0])
-    assert out.base is buffer or np.shares_memory(out, buffer)
+    assert np.shares_memory(out, buffer) and (buffer[0] == PIXEL_UNKNOWN).all()
+    with pytest.raises(ConfigError, match="local_view"):
+        m.local_view((2.5, 4.0, 0.0), out=np.zeros((16, 16), dtype=np.float32))
+    with pytest.raises(ConfigError, match="local_view"):
+        m.local_view((2.5, 4.0, 0.0), out=np.zeros((16, 32), dtype=np.uint8)[:, ::2])
 
 
 def test_robot_map__coverage_counts_only_reachable_floor(tiny_office):

@@ -45,7 +45,7 @@ class Raycaster:
 
     Rays march on a distance field of the obstacle (wall and outside) cells, as range_libc's
     "ray marching" method does: far from obstacles a ray jumps by its (safe) distance to the
-    nearest one; within two cells of an obstacle it walks exactly cell by cell, so a ray stops
+    nearest one; within 2.5 cells of an obstacle it walks exactly cell by cell, so a ray stops
     at the exact point where it enters the first wall or outside cell. Rays never slip between
     diagonal wall cells (raster walls are 4-connected).
 

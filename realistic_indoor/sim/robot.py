@@ -94,6 +94,12 @@ class Robot:
     ``substeps`` physics steps in which the body is driven at the limited speed along its
     heading; walls stop it and it slides along them (no friction).
 
+    The robot touches a wall when its centre is ``radius_m`` plus half the wall's thickness
+    from the wall's centre line. On first contact it may overlap the wall by up to one sub-step's
+    travel (``max_speed_m_s / (control_hz * substeps)``, 5 cm by default) during that sub-step,
+    before pymunk pushes it out; with the default 0.1 m walls its centre therefore never comes
+    within ``radius_m`` of a wall's centre line.
+
     Args:
         segments: ``(N, 2, 2)`` wall segments (m), e.g. :attr:`World.collision_segments`.
         config: Body, limits and control rate.

@@ -111,3 +111,31 @@ def test_env__renders_an_rgb_top_view(env_id):
     raster = env.unwrapped.simulation.world.raster
     assert image.dtype == np.uint8 and image.shape == (*raster.shape, 3)
     assert len(np.unique(image.reshape(-1, 3), axis=0)) > 4  # plan, map, robot, rays at least
+
+
+def _run_python(code: str) -> str:
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+
+
+def test_registration__imports_nothing_heavy():
+    out = _run_python(
+        "import sys, gymnasium as gym, realistic_indoor.envs\n"
+        "print(gym.spec('OfficeExplore-v0').max_episode_steps,"
+        " [m for m in ('numba', 'pymunk', 'scipy', 'realistic_indoor.sim') if m in sys.modules])\n"
+    )
+    assert out.split() == [str(PRESETS["OfficeExplore-v0"].max_episode_steps), "[]"]
+
+
+def test_make__with_the_module_prefix_needs_no_import():
+    out = _run_python(
+        "import gymnasium as gym\n"
+        "from realistic_indoor.building import Building, Door, Room\n"
+        "rooms = (Room.rectangle('a', 'hall', 'hall', (0, 0, 6, 4)),)\n"
+        "b = Building('office', rooms, (Door('e', 'a', None, 0.0, 2.0, 1.0, 1.5708),))\n"
+        "env = gym.make('realistic_indoor.envs:OfficeExplore-v0', building=b)\n"
+        "print(type(env.unwrapped).__name__, env.reset(seed=0)[1]['coverage'] > 0)\n"
+    )
+    assert out.split() == ["ExploreEnv", "True"]

@@ -57,12 +57,41 @@ def toy_building() -> Building:
     return ToyOffice(jitter_m=0.0)(np.random.default_rng(0))
 
 
+TEST_AREAS_M2 = {"office": 300.0, "school": 800.0, "house": 100.0, "random": 300.0}
+"""Small buildings (near each generator's smallest) keep the tests of registered ids fast."""
+
+
 def make_env(env_id: str, **kwargs):
-    """``gym.make(env_id)`` on small toy buildings with a short step limit, for fast tests."""
+    """``gym.make(env_id)`` on a small building of the id's type with a short step limit.
+
+    Uses the id's own generator with a small area; the toy generator stands in for a type
+    whose generator does not exist yet (``make_generator`` names it unknown).
+    """
     import gymnasium as gym
 
-    import realistic_indoor.envs  # noqa: F401  (registers the ids)
+    from realistic_indoor.envs import PRESETS
 
-    kwargs.setdefault("generator", ToyOffice())
     kwargs.setdefault("max_steps", 50)
+    building_type = kwargs.get("building_type", PRESETS[env_id].kwargs["building_type"])
+    if not {"generator", "building", "plan_path"} & set(kwargs):
+        if _has_generator(building_type):
+            kwargs.setdefault("area_m2", TEST_AREAS_M2[building_type])
+        else:
+            kwargs["generator"] = ToyOffice()
     return gym.make(env_id, **kwargs)
+
+
+def _has_generator(building_type: str) -> bool:
+    from realistic_indoor.errors import ConfigError
+
+    try:
+        from realistic_indoor.generator import make_generator
+
+        make_generator(building_type, area_m2=TEST_AREAS_M2[building_type])
+    except ImportError:
+        return False
+    except ConfigError as e:
+        if "unknown generator" in str(e):
+            return False
+        raise
+    return True

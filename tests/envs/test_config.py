@@ -68,8 +68,6 @@ def test_step_before_reset__raises_reset_needed():
 
 
 def test_preset_config__is_the_registered_environment_config():
-    env = make_env("SchoolSearch-v0", max_steps=11)
-    assert env.unwrapped.config == preset_config(
-        "SchoolSearch-v0", generator=env.unwrapped.config.generator, max_steps=11
-    )
+    env = gym.make("SchoolSearch-v0", max_steps=11, area_m2=900.0)
+    assert env.unwrapped.config == preset_config("SchoolSearch-v0", max_steps=11, area_m2=900.0)
     assert env.unwrapped.config.building_type == "school"

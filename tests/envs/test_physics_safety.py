@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import shapely
-from conftest import ToyOffice
+from conftest import TEST_AREAS_M2, ToyOffice, _has_generator
 
 from realistic_indoor.envs.explore import ExploreEnv
 
@@ -13,19 +13,11 @@ STEPS_PER_SOURCE = 20_000
 """Random control steps per building source; 100,000 over the five sources."""
 
 
-def _generator_available() -> bool:
-    try:
-        from realistic_indoor.generator import make_generator  # noqa: F401
-    except ImportError:
-        return False
-    return True
-
-
 SOURCES = [pytest.param({"generator": ToyOffice(n_rooms=3)}, id="toy")] + [
     pytest.param(
-        {"building_type": t, "area_m2": 300.0},
+        {"building_type": t, "area_m2": TEST_AREAS_M2[t]},
         id=t,
-        marks=pytest.mark.skipif(not _generator_available(), reason="the generator is not importable yet"),
+        marks=pytest.mark.skipif(not _has_generator(t), reason=f"no {t} generator yet"),
     )
     for t in ("office", "school", "house", "random")
 ]

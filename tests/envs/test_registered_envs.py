@@ -12,6 +12,7 @@ from conftest import make_env
 from gymnasium.utils.env_checker import check_env, data_equivalence
 
 from realistic_indoor.envs import PRESETS
+from realistic_indoor.envs.render import ViewFrame
 
 ALL_IDS = sorted(PRESETS)
 
@@ -108,8 +109,8 @@ def test_env__renders_an_rgb_top_view(env_id):
     env.reset(seed=0)
     env.step(env.action_space.sample())
     image = env.render()
-    raster = env.unwrapped.simulation.world.raster
-    assert image.dtype == np.uint8 and image.shape == (*raster.shape, 3)
+    frame = ViewFrame(env.unwrapped.simulation.world.raster)  # a pixel per cell, up to 1024 a side
+    assert image.dtype == np.uint8 and image.shape == (*frame.shape, 3) and max(frame.shape) <= 1024
     assert len(np.unique(image.reshape(-1, 3), axis=0)) > 4  # plan, map, robot, rays at least
 
 

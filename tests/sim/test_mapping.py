@@ -2,7 +2,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import corridor_office
+from sim_buildings import corridor_office
 
 from realistic_indoor.building import Building
 from realistic_indoor.errors import ConfigError

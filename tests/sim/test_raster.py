@@ -2,8 +2,8 @@ import math
 
 import numpy as np
 import pytest
-from conftest import corridor_office, rotated
 from scipy import ndimage
+from sim_buildings import corridor_office, rotated
 
 from realistic_indoor.building import Building
 from realistic_indoor.errors import ConfigError

@@ -3,9 +3,9 @@ import math
 import numpy as np
 import pytest
 import shapely
-from conftest import corridor_office, rotated
 from shapely.geometry import LineString, Point, box
 from shapely.ops import unary_union
+from sim_buildings import corridor_office, rotated
 
 from realistic_indoor.building.walls import door_gap
 from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, rasterize

@@ -4,7 +4,7 @@ import pickle
 import numpy as np
 import pytest
 import shapely
-from conftest import corridor_office, rotated
+from sim_buildings import corridor_office, rotated
 
 from realistic_indoor.building.walls import door_gap
 from realistic_indoor.errors import ConfigError

@@ -3,7 +3,7 @@ import math
 import numpy as np
 import pytest
 import shapely
-from conftest import corridor_office
+from sim_buildings import corridor_office
 
 from realistic_indoor.building import Building, Room
 from realistic_indoor.errors import ConfigError

@@ -64,6 +64,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--no-two-sample", action="store_true", help="skip the classifier two-sample tests")
     p.add_argument(
+        "--two-sample-area",
+        action="store_true",
+        help="let the two-sample tests use room areas (default: scale-free features only)",
+    )
+    p.add_argument(
         "--seed", type=int, default=0, help="seed of the two-sample tests' cross-validation (default 0)"
     )
     p.add_argument("--worst", type=int, default=3, help="worst deviations named per set (default 3)")
@@ -126,6 +131,7 @@ def run(args: argparse.Namespace) -> int:
         skip_bad=args.skip_bad,
         seed=args.seed,
         two_sample=not args.no_two_sample,
+        two_sample_area=args.two_sample_area,
     )
     text = render_comparison(comparison, args.format, worst=args.worst)
     if args.output:

@@ -181,7 +181,9 @@ def _reference(
     return paper_reference(btype if reference == "paper" else reference), None
 
 
-def _two_sample_tests(named: Sequence[PlanSet], seed: int) -> tuple[list[TwoSampleResult], list[str]]:
+def _two_sample_tests(
+    named: Sequence[PlanSet], seed: int, with_area: bool
+) -> tuple[list[TwoSampleResult], list[str]]:
     from realistic_indoor.validator.two_sample import two_sample_test
 
     results, notes = [], []
@@ -189,7 +191,9 @@ def _two_sample_tests(named: Sequence[PlanSet], seed: int) -> tuple[list[TwoSamp
         if min(len(a), len(b)) < 2:
             notes.append(f"no two-sample test of {a.name} vs {b.name}: it needs at least 2 plans in each set")
             continue
-        results.append(two_sample_test(a.buildings, b.buildings, names=(a.name, b.name), seed=seed))
+        results.append(
+            two_sample_test(a.buildings, b.buildings, names=(a.name, b.name), seed=seed, with_area=with_area)
+        )
     return results, notes
 
 
@@ -202,6 +206,7 @@ def compare_sets(
     skip_bad: bool = False,
     seed: int = 0,
     two_sample: bool = True,
+    two_sample_area: bool = False,
     score_config: ScoreConfig | None = None,
 ) -> Comparison:
     """Measure every set against a reference, and the sets against each other.
@@ -216,6 +221,8 @@ def compare_sets(
         skip_bad: Leave out plans without rooms or doors instead of raising.
         seed: Seed of the two-sample tests' cross-validation.
         two_sample: Run the two-sample tests (they need scikit-learn and take about a second).
+        two_sample_area: Let the two-sample tests use room areas too (default: scale-free
+            features only).
         score_config: Constants of the realism score (default :class:`ScoreConfig`).
 
     Raises:
@@ -239,7 +246,7 @@ def compare_sets(
     tests: list[TwoSampleResult] = []
     if two_sample:
         named = [r.plans for r in reports] + ([ref_set] if ref_set is not None else [])
-        tests, notes = _two_sample_tests(named, seed)
+        tests, notes = _two_sample_tests(named, seed, two_sample_area)
         if len(named) < 2:
             notes.append(
                 "no two-sample test: it compares two sets of plans (give a second set or --reference DIR)"

@@ -1,7 +1,8 @@
 """A classifier two-sample test: can a simple model tell buildings of set A from set B?
 
-Each building becomes a vector of scale-free and per-label statistics
-(:func:`building_features`); a standardised logistic regression is trained to tell the sets
+Each building becomes a vector of per-label and connectivity statistics
+(:func:`building_features`; by default without the areas, which depend on the plan's often
+unreliable scale); a standardised logistic regression is trained to tell the sets
 apart under repeated stratified cross-validation. The reported balanced accuracy is 0.5 when
 the sets are indistinguishable to it and 1.0 when they are perfectly separable; balanced
 accuracy (the mean of the recalls of both sets) keeps a large set against a small one from
@@ -26,7 +27,14 @@ if TYPE_CHECKING:
 
     from realistic_indoor.building.building import Building
 
-__all__ = ["FEATURE_NAMES", "TwoSampleResult", "building_features", "feature_matrix", "two_sample_test"]
+__all__ = [
+    "FEATURE_NAMES",
+    "SCALE_FREE",
+    "TwoSampleResult",
+    "building_features",
+    "feature_matrix",
+    "two_sample_test",
+]
 
 _SHARE_METRICS = tuple(m for m in CONNECTIVITY_METRICS if m.unit == "%")
 
@@ -39,6 +47,10 @@ FEATURE_NAMES: tuple[str, ...] = (
 )
 """Names of the building-level features, in vector order. Sizes of whole buildings (room count,
 floor area, path lengths) are left out: they say how big a building is, not how it is built."""
+
+SCALE_FREE = np.array(["log area" not in name for name in FEATURE_NAMES])
+"""Mask of the features that do not depend on the plan's scale (all but the areas): real plans'
+scales are often unreliable, so the two-sample test leaves areas out unless asked."""
 
 
 def building_features(b: Building) -> np.ndarray:
@@ -118,6 +130,7 @@ def two_sample_test(
     n_splits: int = 5,
     n_repeats: int = 5,
     top: int = 3,
+    with_area: bool = False,
 ) -> TwoSampleResult:
     """Cross-validated accuracy of a logistic regression telling ``a`` from ``b``.
 
@@ -129,6 +142,8 @@ def two_sample_test(
         n_splits: Folds per repeat (reduced to the size of the smaller set).
         n_repeats: Repeats of the cross-validation with different shuffles.
         top: How many telling features to report.
+        with_area: Also use the rooms' areas (by default only the scale-free features, see
+            :data:`SCALE_FREE`).
 
     Raises:
         ConfigError: If a set has fewer than two buildings.
@@ -143,7 +158,9 @@ def two_sample_test(
     from sklearn.pipeline import make_pipeline
     from sklearn.preprocessing import StandardScaler
 
-    x = np.vstack([feature_matrix(a), feature_matrix(b)])
+    columns = np.ones(len(FEATURE_NAMES), dtype=bool) if with_area else SCALE_FREE
+    names_used = [n for n, keep in zip(FEATURE_NAMES, columns, strict=True) if keep]
+    x = np.vstack([feature_matrix(a), feature_matrix(b)])[:, columns]
     y = np.r_[np.zeros(len(a), dtype=int), np.ones(len(b), dtype=int)]
     model = make_pipeline(StandardScaler(), LogisticRegression(max_iter=2000, class_weight="balanced"))
     cv = RepeatedStratifiedKFold(
@@ -152,7 +169,7 @@ def two_sample_test(
     scores = cross_val_score(model, x, y, cv=cv, scoring="balanced_accuracy")
     coefs = model.fit(x, y)[-1].coef_[0]
     order = np.argsort(-np.abs(coefs), kind="stable")[:top]
-    telling = tuple((FEATURE_NAMES[i], float(coefs[i])) for i in order if abs(coefs[i]) > 1e-9)
+    telling = tuple((names_used[i], float(coefs[i])) for i in order if abs(coefs[i]) > 1e-9)
     return TwoSampleResult(
         names[0], names[1], len(a), len(b), float(scores.mean()), float(scores.std()), len(scores), telling
     )

@@ -38,3 +38,12 @@ def test_two_sample_test__deterministic_given_the_seed(maze_office, tiny_office,
 def test_two_sample_test__needs_two_buildings_per_set(maze_office):
     with pytest.raises(ConfigError, match="at least 2 buildings per set; 'x' has 1"):
         two_sample_test([maze_office], [maze_office] * 3, names=("x", "y"))
+
+
+def test_two_sample_test__scale_alone_is_invisible_unless_areas_are_asked_for(maze_office, scaled):
+    small = [scaled(maze_office, f) for f in (0.9, 1.0, 1.1, 1.2)]
+    large = [scaled(maze_office, 3 * f) for f in (0.9, 1.0, 1.1, 1.2)]
+    assert two_sample_test(small, large).accuracy == pytest.approx(0.5)
+    with_area = two_sample_test(small, large, with_area=True)
+    assert with_area.accuracy == pytest.approx(1.0)
+    assert all("log area" in name for name, _coef in with_area.telling_features)

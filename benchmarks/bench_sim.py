@@ -109,7 +109,7 @@ def _per_building_table(buildings: list[tuple[str, object]], args: argparse.Name
     )
 
 
-def _best_us(fn, reps: int) -> float:
+def _median_us(fn, reps: int) -> float:
     """Median time of ``fn()`` over ``reps`` calls, in microseconds (after one warm-up call)."""
     fn()
     times = np.empty(reps)
@@ -133,8 +133,8 @@ def _measure(name: str, building, args: argparse.Namespace) -> dict:
     )
 
     building.walls  # noqa: B018 - the building's own cached geometry, not the simulator's cost
-    raster_ms = _best_us(lambda: rasterize(building), 5) / 1e3
-    world_ms = _best_us(lambda: World(building), 3) / 1e3
+    raster_ms = _median_us(lambda: rasterize(building), 5) / 1e3
+    world_ms = _median_us(lambda: World(building), 3) / 1e3
     world = World(building)
     rng = np.random.default_rng(args.seed)
     poses = _free_poses(world, rng, 200)
@@ -151,15 +151,15 @@ def _measure(name: str, building, args: argparse.Namespace) -> dict:
     rays_m = n_fans * 1080 / (time.perf_counter() - t) / 1e6
 
     lidar = Lidar(LidarConfig())
-    scan_us = _best_us(lambda: lidar.scan(world.raycaster, tuple(poses[0]), rng), args.reps)
+    scan_us = _median_us(lambda: lidar.scan(world.raycaster, tuple(poses[0]), rng), args.reps)
     robot = Robot.in_world(world)
     robot_map = RobotMap(world)
-    physics_us = _best_us(lambda: robot.step(rng.uniform(-0.3, 1.0), rng.uniform(-2, 2)), args.reps)
+    physics_us = _median_us(lambda: robot.step(rng.uniform(-0.3, 1.0), rng.uniform(-2, 2)), args.reps)
     robot.reset(world.start_pose)
     local64 = RobotMap(world, LocalMapConfig(64, 0.2))
     local84 = RobotMap(world, LocalMapConfig(84, 0.2))
-    local64_us = _best_us(lambda: local64.local_view(world.start_pose), args.reps)
-    local84_us = _best_us(lambda: local84.local_view(world.start_pose), args.reps)
+    local64_us = _median_us(lambda: local64.local_view(world.start_pose), args.reps)
+    local84_us = _median_us(lambda: local84.local_view(world.start_pose), args.reps)
 
     map_times, total_times = [], []
     robot_map.update(lidar.scan(world.raycaster, robot.pose, rng))

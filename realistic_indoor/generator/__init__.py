@@ -1,1 +1,90 @@
-"""generator (work in progress)."""
+"""Building generators: realistic offices, schools and houses, and a World-Generator-like baseline.
+
+A generator is an object called with a ``numpy.random.Generator`` that returns a
+:class:`~realistic_indoor.building.Building` (:class:`Generator`); environments receive one and
+draw a new building per episode. :func:`generate` is the one-line convenience::
+
+    b = generate("office", area_m2=2000, seed=7)
+    gen = make_generator("school", area_m2=3000)
+    b = gen(np.random.default_rng(7))
+    b2 = regenerate(b, rooms=["r12", "r13"], seed=3)
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.generator.base import DEFAULT_AREAS_M2, GENERATOR_NAMES, Generator
+from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
+
+if TYPE_CHECKING:
+    from realistic_indoor.building.building import Building
+
+__all__ = [
+    "DEFAULT_AREAS_M2",
+    "GENERATOR_NAMES",
+    "Generator",
+    "OfficeGenerator",
+    "SchoolGenerator",
+    "generate",
+    "make_generator",
+]
+
+
+def make_generator(name: str, area_m2: float | None = None, **options: Any) -> Generator:
+    """The generator called ``name`` with its configuration.
+
+    Args:
+        name: ``"office"``, ``"school"``, ``"house"`` or ``"random"`` (see
+            :data:`GENERATOR_NAMES`); with ``model=`` any other name (``"hospital"``) gives an
+            office-like layout driven by that model.
+        area_m2: Floor area wanted (m2); default per type (:data:`DEFAULT_AREAS_M2`).
+        **options: Further fields of the generator (``model=`` a fitted
+            :class:`~realistic_indoor.models.BuildingTypeModel`; for ``"random"``,
+            ``width_units=``/``height_units=`` instead of an area).
+
+    Raises:
+        ConfigError: For an unknown name (the message lists the valid ones) or bad values.
+    """
+    key = str(name).strip().lower()
+    classes = {"office": OfficeGenerator, "school": SchoolGenerator}
+    if key not in classes and options.get("model") is not None:
+        key = "office"
+    if key not in classes:
+        raise ConfigError(f"unknown generator {name!r}; valid: {', '.join(GENERATOR_NAMES)}")
+    cls = classes[key]
+    try:
+        return cls(area_m2=DEFAULT_AREAS_M2[key] if area_m2 is None else area_m2, **options)
+    except TypeError as e:
+        raise ConfigError(f"bad option for the {key} generator: {e}") from None
+
+
+def generate(name: str, area_m2: float | None = None, seed: int | None = None, **options: Any) -> Building:
+    """Generate one building.
+
+    Args:
+        name: Generator name (see :func:`make_generator`).
+        area_m2: Floor area wanted (m2); default per type.
+        seed: Seed of the random generator; the same name, area, options and seed give the same
+            building, byte for byte. ``None`` draws a fresh seed (recorded in the metadata).
+        **options: Passed to :func:`make_generator`.
+
+    Returns:
+        The building; its metadata records ``generator``, ``params`` and ``seed``.
+
+    Examples:
+        >>> b = generate("office", area_m2=1200, seed=3)
+        >>> b.metadata["generator"], b.metadata["seed"]
+        ('office', 3)
+    """
+    gen = make_generator(name, area_m2, **options)
+    if seed is None:
+        seed = int(np.random.default_rng().integers(2**31))
+    elif not isinstance(seed, (int, np.integer)) or isinstance(seed, bool) or seed < 0:
+        raise ConfigError(f"seed must be a non-negative integer, not {seed!r}")
+    b = gen(np.random.default_rng(int(seed)))
+    return replace(b, metadata={**b.metadata, "seed": int(seed)})

@@ -1,0 +1,195 @@
+"""Doors of a generated plan: openings between circulation spaces, room doors, reachability.
+
+Ordinary rooms open onto a corridor or a hall, chosen with the model's connection frequencies;
+closets and core rooms open into the room or short corridor they belong to; extra doors bring
+each label's mean door count to the model's (a second door to the corridor, a connecting door
+between two neighbouring rooms that both have their own, or a door to the garden). A last pass
+makes sure every room is reachable from outside.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from realistic_indoor.building.labels import ROOM_LABELS, SemanticLabel
+from realistic_indoor.errors import RealisticIndoorError
+from realistic_indoor.generator.doors import RULES, add_door, door_fits, exterior_walls, open_between
+from realistic_indoor.models.building_model import OUTSIDE
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from realistic_indoor.generator.plan import Plan
+    from realistic_indoor.models.building_model import BuildingTypeModel
+
+__all__ = ["connect_circulation", "connect_rooms", "ensure_reachable"]
+
+C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
+
+
+def connect_circulation(plan: Plan, skip: set[tuple[int, int]] | None = None) -> None:
+    """Open every pair of touching corridors and halls into each other (except pairs in ``skip``)."""
+    for i, j in sorted(plan.contacts()):
+        if plan.rooms[i].is_circulation and plan.rooms[j].is_circulation and (i, j) not in (skip or set()):
+            open_between(plan, i, j)
+
+
+def _door_to(plan: Plan, i: int, j: int, rng: np.random.Generator, width: int, where: str = "end") -> bool:
+    walls = [w for w in plan.shared(i, j) if door_fits(w, width)]
+    walls.sort(key=lambda w: -w.length)
+    return any(add_door(plan, i, j, w, width, rng, where=where) for w in walls)
+
+
+def connect_rooms(plan: Plan, model: BuildingTypeModel, rng: np.random.Generator, pairs: float) -> None:
+    """Doors of every room that is not a corridor or hall.
+
+    Args:
+        plan: The plan, circulation already connected.
+        model: Connection frequencies and mean door counts per label.
+        rng: Random source.
+        pairs: Share of medium and big rooms to give a connecting door to a neighbour.
+    """
+    neighbours = plan.neighbours()
+    options = [_circulation_options(plan, i, neighbours[i]) for i in range(len(plan.rooms))]
+    p_hall = _hall_preference(plan, options, model)
+    for i, room in enumerate(plan.rooms):
+        if room.is_circulation:
+            continue
+        if room.host >= 0 and _door_to(plan, i, room.host, rng, RULES.room):
+            continue
+        _primary_door(plan, i, options[i], p_hall[room.label], rng)
+    _connecting_doors(plan, neighbours, rng, pairs)
+    _extra_doors(plan, neighbours, model, rng)
+
+
+def _circulation_options(plan: Plan, i: int, near: list[int]) -> dict[SemanticLabel, list[int]]:
+    """Corridors and halls room ``i`` shares enough wall with for a door."""
+    out: dict[SemanticLabel, list[int]] = {C: [], H: []}
+    if plan.rooms[i].is_circulation:
+        return out
+    for j in near:
+        lab = plan.rooms[j].label
+        if lab in out and any(door_fits(w, RULES.room) for w in plan.shared(i, j)):
+            out[lab].append(j)
+    return out
+
+
+def _hall_preference(
+    plan: Plan, options: list[dict[SemanticLabel, list[int]]], model: BuildingTypeModel
+) -> dict[SemanticLabel, float]:
+    """Probability that a room beside both a corridor and a hall opens onto the hall.
+
+    Chosen per label so that the share of its doors that lead to halls is the model's: the
+    model's share divided by the share of rooms that could open onto a hall at all.
+    """
+    out = {}
+    for label in ROOM_LABELS:
+        rooms = [k for k, r in enumerate(plan.rooms) if r.label is label and r.host < 0]
+        beside = sum(1 for k in rooms if options[k][H])
+        to_c, to_h = model.connection(label, C.value), model.connection(label, H.value)
+        wanted = to_h / (to_c + to_h) if to_c + to_h > 0 else 0.0
+        out[label] = min(1.0, wanted * len(rooms) / beside) if beside else 0.0
+    return out
+
+
+def _primary_door(
+    plan: Plan, i: int, options: dict[SemanticLabel, list[int]], p_hall: float, rng: np.random.Generator
+) -> None:
+    """The room's door to a corridor or a hall (``p_hall``: chance of the hall when both are there)."""
+    kinds = [k for k in (C, H) if options[k]]
+    if len(kinds) == 2:
+        kinds = [H, C] if rng.random() < p_hall else [C, H]
+    for kind in kinds:
+        j = max(options[kind], key=lambda n: max(x.length for x in plan.shared(i, n)))
+        if _door_to(plan, i, j, rng, RULES.room):
+            return
+    plan.rooms[i].role = "back" if plan.rooms[i].role == "room" else plan.rooms[i].role
+
+
+def _connecting_doors(
+    plan: Plan, neighbours: list[list[int]], rng: np.random.Generator, share: float
+) -> None:
+    """Connecting doors between neighbouring medium/big rooms that each have a door of their own."""
+    big = [i for i, r in enumerate(plan.rooms) if r.label in (SemanticLabel.MEDIUM, SemanticLabel.BIG)]
+    if not big:
+        return
+    used: set[int] = set()
+    want = int(share * len(big) / 2 + rng.random())
+    for k in rng.permutation(len(big)):
+        if want <= 0:
+            break
+        i = big[int(k)]
+        if i in used or plan.rooms[i].role != "room":
+            continue
+        mates = [j for j in neighbours[i] if j in big and j not in used and plan.rooms[j].role == "room"]
+        for j in rng.permutation(mates) if mates else ():
+            if _door_to(plan, i, int(j), rng, RULES.room):
+                used |= {i, int(j)}
+                want -= 1
+                break
+
+
+def _extra_doors(
+    plan: Plan, neighbours: list[list[int]], model: BuildingTypeModel, rng: np.random.Generator
+) -> None:
+    """Second doors (to circulation or outside) until each label's mean door count is the model's."""
+    counts = plan.door_count()
+    for label in ROOM_LABELS:
+        rooms = [i for i, r in enumerate(plan.rooms) if r.label is label and r.role == "room"]
+        if not rooms:
+            continue
+        everyone = [i for i, r in enumerate(plan.rooms) if r.label is label]
+        deficit = model.stats(label).doors_mean * len(everyone) - sum(counts[i] for i in everyone)
+        rooms.sort(key=lambda i: -plan.rooms[i].area - rng.random())
+        p_out = model.connection(label, OUTSIDE)
+        for i in rooms:
+            if deficit < 0.5 and rng.random() > deficit:
+                break
+            if _one_more_door(plan, i, neighbours[i], rng, outside=rng.random() < p_out):
+                deficit -= 1
+
+
+def _one_more_door(plan: Plan, i: int, near: list[int], rng: np.random.Generator, outside: bool) -> bool:
+    if outside:
+        for w in exterior_walls(plan, i):
+            if door_fits(w, RULES.room) and add_door(plan, i, None, w, RULES.room, rng):
+                return True
+    circ = [j for j in near if plan.rooms[j].is_circulation]
+    circ.sort(key=lambda j: -max(w.length for w in plan.shared(i, j)))
+    return any(_door_to(plan, i, j, rng, RULES.room) for j in circ)
+
+
+def ensure_reachable(plan: Plan, rng: np.random.Generator) -> None:
+    """Add doors until every room can be reached from an exterior door.
+
+    An unreachable room gets a door to a reachable neighbour, circulation first.
+
+    Raises:
+        RealisticIndoorError: If some room shares no wall long enough for a door with any
+            reachable room (a layout bug, never expected).
+    """
+    while True:
+        seen = plan.reachable()
+        lost = [i for i, s in enumerate(seen) if not s]
+        if not lost:
+            return
+        neighbours = plan.neighbours()
+        progress = False
+        for i in lost:
+            near = [j for j in neighbours[i] if seen[j]]
+            near.sort(key=lambda j: (not plan.rooms[j].is_circulation, plan.rooms[j].label in ROOM_LABELS))
+            for j in near:
+                width = RULES.room
+                if plan.rooms[i].is_circulation and plan.rooms[j].is_circulation:
+                    if open_between(plan, i, j):
+                        progress = True
+                        break
+                elif _door_to(plan, i, j, rng, width, where="centre"):
+                    progress = True
+                    break
+            if progress:
+                break
+        if not progress:
+            raise RealisticIndoorError(
+                f"generator could not reach {len(lost)} rooms (a bug: please report the seed)"
+            )

@@ -1,0 +1,121 @@
+"""Functional labels of generated rooms, drawn from the model's mix and each room's role."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.validator.connectivity import CORE_FUNCTIONS
+
+if TYPE_CHECKING:
+    from collections.abc import Iterable
+
+    import numpy as np
+
+    from realistic_indoor.generator.plan import Plan
+    from realistic_indoor.models.building_model import BuildingTypeModel
+
+__all__ = ["FunctionRoles", "assign_functions", "draw_function"]
+
+C = SemanticLabel.CORRIDOR
+
+
+def draw_function(
+    rng: np.random.Generator,
+    weights: dict[str, float],
+    prefer: Iterable[str] = (),
+    avoid: Iterable[str] = (),
+) -> str:
+    """A function drawn from ``weights``, restricted to ``prefer`` where the mix has any of them.
+
+    Args:
+        rng: Random source.
+        weights: Functional labels and their weights.
+        prefer: Functions to choose among when the mix holds at least one of them.
+        avoid: Functions whose weight is cut to a twentieth.
+    """
+    prefer = set(prefer)
+    avoid = set(avoid)
+    pool = {k: v for k, v in weights.items() if k in prefer} or dict(weights)
+    names = sorted(pool)
+    w = [pool[k] * (0.05 if k in avoid else 1.0) for k in names]
+    return names[int(rng.choice(len(names), p=[x / sum(w) for x in w]))]
+
+
+class FunctionRoles:
+    """Which functions suit which roles, for one building type.
+
+    Args:
+        service: Functions of rooms in service cores.
+        storage: Functions of closets and rooms entered through other rooms.
+        ends: Functions of small rooms at corridor ends.
+        entrance: Functions of the entrance hall.
+        core: The type's core functions (offices, classrooms, bedrooms): rooms without a door
+            to a corridor rarely get them.
+    """
+
+    def __init__(
+        self,
+        service: Iterable[str],
+        storage: Iterable[str],
+        ends: Iterable[str],
+        entrance: Iterable[str],
+        core: Iterable[str],
+    ) -> None:
+        self.service = tuple(service)
+        self.storage = tuple(storage)
+        self.ends = tuple(ends)
+        self.entrance = tuple(entrance)
+        self.core = tuple(core)
+
+
+def _core_functions(model: BuildingTypeModel) -> tuple[str, ...]:
+    return tuple(sorted(CORE_FUNCTIONS.get(model.building_type, frozenset())))
+
+
+def assign_functions(
+    plan: Plan, model: BuildingTypeModel, rng: np.random.Generator, roles: FunctionRoles
+) -> None:
+    """Give every room without a function one, by role and label.
+
+    Rooms of a service core get service functions, toilets in pairs; closets storage; the
+    entrance hall an entrance function; ordinary rooms their label's mix, with the type's core
+    function (office, classroom, bedroom) kept for rooms that open onto a corridor.
+    """
+    core = roles.core or _core_functions(model)
+    partners = plan.door_partners()
+    by_group: dict[int, list[int]] = {}
+    for i, r in enumerate(plan.rooms):
+        if r.role == "core" and not r.function:
+            by_group.setdefault(r.group, []).append(i)
+    for rooms in by_group.values():
+        _service_core(plan, rooms, model, rng, roles)
+    for i, r in enumerate(plan.rooms):
+        if r.function:
+            continue
+        weights = model.function_weights(r.label)
+        if r.role in ("closet", "back") and r.label is SemanticLabel.SMALL:
+            r.function = draw_function(rng, weights, roles.storage)
+        elif r.role == "end":
+            r.function = draw_function(rng, weights, roles.ends)
+        elif r.role == "lobby":
+            r.function = draw_function(rng, weights, roles.entrance)
+        elif r.role == "hall":
+            r.function = draw_function(rng, weights, avoid=roles.entrance)
+        else:
+            to_corridor = any(j is not None and plan.rooms[j].label is C for j in partners[i])
+            r.function = draw_function(rng, weights, avoid=() if to_corridor else core)
+
+
+def _service_core(
+    plan: Plan, rooms: list[int], model: BuildingTypeModel, rng: np.random.Generator, roles: FunctionRoles
+) -> None:
+    """Toilets side by side (two or more when the core has four rooms) and other services."""
+    weights = model.function_weights(SemanticLabel.SMALL)
+    toilets = [f for f in ("toilet", "washroom", "bathroom") if f in weights]
+    n_toilets = 2 if toilets and len(rooms) >= 3 else (1 if toilets and rng.random() < 0.6 else 0)
+    for k, i in enumerate(rooms):
+        if k < n_toilets:
+            plan.rooms[i].function = toilets[0]
+        else:
+            plan.rooms[i].function = draw_function(rng, weights, roles.service, avoid=toilets)

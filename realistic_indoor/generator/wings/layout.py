@@ -1,0 +1,283 @@
+"""The wing layout of offices and schools: skeleton, rooms, corridors, doors, functions."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.generator.connect import connect_circulation, connect_rooms, ensure_reachable
+from realistic_indoor.generator.doors import RULES, add_door, exterior_walls
+from realistic_indoor.generator.functions import FunctionRoles, assign_functions
+from realistic_indoor.generator.geometry import Rect, contacts_by_pair, to_units
+from realistic_indoor.generator.plan import Plan, PlanRoom
+from realistic_indoor.generator.wings.annex import add_annex
+from realistic_indoor.generator.wings.bays import (
+    DOOR_NEED,
+    SHALLOW,
+    BayContext,
+    Budget,
+    core_shape,
+    subdivide,
+)
+from realistic_indoor.generator.wings.corridors import segment_corridors
+from realistic_indoor.generator.wings.halls import carve_hall_bays
+from realistic_indoor.generator.wings.paint import Regions, paint
+from realistic_indoor.generator.wings.sizing import MIN_GAP_M, Dims, size_skeleton
+from realistic_indoor.generator.wings.skeleton import Skeleton, sample_shape
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.models.building_model import BuildingTypeModel
+
+__all__ = ["wing_plan"]
+
+C, H, S, M, B = (
+    SemanticLabel.CORRIDOR,
+    SemanticLabel.HALL,
+    SemanticLabel.SMALL,
+    SemanticLabel.MEDIUM,
+    SemanticLabel.BIG,
+)
+
+
+def _clamp(v: float, lo_hi: tuple[float, float]) -> float:
+    return min(max(v, lo_hi[0]), lo_hi[1])
+
+
+def _dims(rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle) -> Dims:
+    """Corridor width and room depths from the model's corridors, medium and small rooms.
+
+    A corridor of mean area ``a`` and axes ratio ``r`` is ``sqrt(a / r)`` wide; a strip of rooms
+    is as deep as a square medium room, ``sqrt(a)`` (a strip of small rooms likewise); the
+    style keeps both within the type's usual ranges.
+    """
+    c, m, s, h = (model.stats(lab) for lab in (C, M, S, H))
+    corridor = _clamp(math.sqrt(c.area_mean / max(c.axes_ratio_mean, 1.0)), style.corridor_width_m)
+    depth = _clamp(0.9 * math.sqrt(m.area_mean), style.room_depth_m)
+    shallow = _clamp(math.sqrt(s.area_mean), style.shallow_depth_m)
+    return Dims(
+        corridor=to_units(corridor * rng.uniform(0.9, 1.1)),
+        depth=to_units(depth * rng.uniform(0.92, 1.08)),
+        shallow=to_units(shallow),
+        hall_area=round(h.area_mean * 100),
+    )
+
+
+def _skeleton(
+    rng: np.random.Generator, area_m2: float, dims: Dims, model: BuildingTypeModel, style: WingStyle
+) -> Skeleton:
+    """A sized skeleton whose wings are of a plausible length and whose footprint is not too long.
+
+    Draws up to a dozen shapes and keeps the first that fits, else the one that came closest.
+    """
+    n_rooms = area_m2 / model.mean_room_area()
+    across = (1.3 * dims.depth + dims.corridor) / 10
+    lo, hi = style.wing_length_m
+    max_extent = to_units(max(style.max_extent_m, 2.2 * math.sqrt(area_m2)))
+    best, best_cost = None, math.inf
+    for _ in range(16):
+        n_edges = max(1, round(area_m2 / across / rng.uniform(lo, hi)))
+        sk = sample_shape(rng, n_edges, style.shapes)
+        n_halls = int(model.shares()[H] * n_rooms + rng.random())
+        gap = size_skeleton(sk, rng, dims, style, area_m2 * 100, (n_halls, model.structures.junction_halls))
+        extent = max(sum(map(sum, sk.cols)) + sum(sk.col_gaps), sum(map(sum, sk.rows)) + sum(sk.row_gaps))
+        cost = max(0.0, 0.4 * lo - gap) + max(0.0, gap - 1.8 * hi) + max(0, extent - max_extent) / 2
+        cost += 1000.0 if gap <= MIN_GAP_M else 0.0
+        if cost < best_cost:
+            best, best_cost = sk, cost
+        if cost == 0:
+            break
+    return best
+
+
+def _budget(regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int]) -> Budget:
+    """Units the bays should hold so that the building matches the model's label shares.
+
+    Small rooms come from corridor ends, closets, service cores (the model's clustered share),
+    shallow strips and, for the rest, notches beside rooms; shallow strips take medium rooms
+    once the small ones are enough. The number of ordinary rooms is the one whose frontage
+    fills the deep strips (found by bisection: the frontage grows with it).
+    """
+    main = [b for b in regions.bays if b.depth >= SHALLOW]
+    shallow = [b for b in regions.bays if b.depth < SHALLOW]
+    length = sum(b.length for b in main)
+    depth = sum(b.depth * b.length for b in main) / max(length, 1)
+    s_length = sum(b.length for b in shallow)
+    s_depth = sum(b.depth * b.length for b in shallow) / max(s_length, 1)
+    p = model.shares()
+    total = max(p[S] + p[M] + p[B], 1e-6)
+    ps, pm, pb = p[S] / total, p[M] / total, p[B] / total
+    area = {lab: model.stats(lab).area_mean * 100 for lab in (S, M, B)}
+    rows, side, per_core = core_shape(model, round(depth), core_rows)
+    core_width = stub + 2 * side if per_core == 2 * rows else side * per_core
+    w_small = max(area[S] / max(s_depth, 1), 15)
+    w_shallow_m = area[M] / max(s_depth, 1)
+    st = model.structures
+
+    def plan_for(n: float) -> dict[str, float]:
+        need_s = ps * n
+        cores = st.clustered_small_rooms * need_s / per_core
+        closets = st.closets_per_room * (pm + pb) * n
+        rest = need_s * (1 - st.clustered_small_rooms) - closets - len(regions.ends)
+        small = min(max(rest, 0.0), s_length / w_small)
+        notches = max(rest - small, 0.0)
+        closets = max(closets + min(rest, 0.0), 0.0)
+        shallow_m = max(s_length - small * w_small, 0.0) / w_shallow_m
+        paired = closets + notches
+        return {
+            "M": pm * n - shallow_m - 0.75 * paired,
+            "B": pb * n - 0.25 * paired,
+            "closet": closets,
+            "notch": notches,
+            "core": cores,
+            "S": small,
+            "shallow_m": shallow_m,
+        }
+
+    def frontage(n: float) -> float:
+        w = plan_for(n)
+        paired = w["closet"] + w["notch"]
+        rooms = (max(w["M"], 0) + 0.75 * paired) * area[M] / depth + (max(w["B"], 0) + 0.25 * paired) * area[
+            B
+        ] / depth
+        return rooms + w["core"] * core_width + w["notch"] * max(math.sqrt(area[S]), 15)
+
+    lo, hi = 0.0, 1.0
+    while frontage(hi) < length and hi < 1e6:
+        hi *= 2
+    for _ in range(40):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if frontage(mid) < length else (lo, mid)
+    want = plan_for(lo)
+    want["M"] += want.pop("shallow_m")
+    return Budget(want)
+
+
+def wing_plan(
+    rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, style: WingStyle
+) -> tuple[Plan, dict[str, str]]:
+    """Lay out a wing building of about ``area_m2``.
+
+    Returns:
+        The plan (rooms, doors, functions) and facts about the layout for the metadata
+        (``shape``).
+    """
+    dims = _dims(rng, model, style)
+    annex_m2 = rng.uniform(*style.annex_area_m2) if style.annex else 0.0
+    sk = _skeleton(rng, area_m2 - annex_m2, dims, model, style)
+    regions = paint(sk)
+    carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
+    plan = Plan(exterior_holes=regions.holes)
+    for _, rects in regions.halls:
+        plan.add(PlanRoom(rects, H, role="hall"))
+    circulation = regions.corridors + [r for _, rects in regions.halls for r in rects]
+    stub = to_units(rng.uniform(1.3, 1.6))
+    ctx = BayContext(
+        model, _budget(regions, model, stub, style.core_rooms), circulation, stub, style.core_rooms
+    )
+    for k in rng.permutation(len(regions.bays)):
+        subdivide(plan, regions.bays[int(k)], rng, ctx)
+    for rect in regions.ends:
+        plan.add(PlanRoom([rect], S, role="end"))
+    _corridors(plan, regions, model, rng, dims)
+    annex = add_annex(plan, rng, style, annex_m2) if style.annex else -1
+    connect_circulation(plan)
+    _entrances(plan, rng, _lobby(plan), annex, style, model)
+    connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
+    ensure_reachable(plan, rng)
+    roles = FunctionRoles(
+        style.service_functions, style.storage_functions, style.end_functions, style.entrance_functions, ()
+    )
+    assign_functions(plan, model, rng, roles)
+    return plan, {"shape": sk.shape}
+
+
+def _lobby(plan: Plan) -> int:
+    """Make the hall with a facade nearest the middle of the building the lobby (-1: none)."""
+    ids = [i for i, r in enumerate(plan.rooms) if r.role == "hall"]
+    with_facade = [i for i in ids if exterior_walls(plan, i)]
+    if not with_facade:
+        return -1
+    boxes = [r.bounds for r in plan.rooms]
+    cx = (min(b[0] for b in boxes) + max(b[2] for b in boxes)) / 2
+    cy = (min(b[1] for b in boxes) + max(b[3] for b in boxes)) / 2
+
+    def off_centre(i: int) -> float:
+        x0, y0, x1, y1 = plan.rooms[i].bounds
+        return abs((x0 + x1) / 2 - cx) + abs((y0 + y1) / 2 - cy)
+
+    lobby = min(with_facade, key=off_centre)
+    plan.rooms[lobby].role = "lobby"
+    return lobby
+
+
+def _corridors(
+    plan: Plan, regions: Regions, model: BuildingTypeModel, rng: np.random.Generator, dims: Dims
+) -> None:
+    """Cut the corridor lines into as many segments as the model's corridor share asks for."""
+    p = model.shares()
+    others = sum(1 for r in plan.rooms if r.label is not C)
+    stubs = sum(1 for r in plan.rooms if r.label is C)
+    want = round(0.9 * p[C] / max(1 - p[C], 1e-6) * others) - stubs
+    junctions: list[Rect] = [r for _, rects in regions.halls for r in rects] + regions.corridors
+    min_len = max(4 * dims.corridor, to_units(6.0))
+    fronts = _fronts(plan, regions.corridors)
+    for seg in segment_corridors(regions.corridors, want, rng, min_len, junctions, fronts, DOOR_NEED):
+        plan.add(PlanRoom([seg], C, role="corridor"))
+
+
+def _fronts(plan: Plan, pieces: list[Rect]) -> list[list[tuple[int, int]]]:
+    """For each corridor piece, the spans along it of the rooms touching its long sides."""
+    shapes = [[p] for p in pieces] + [r.rects for r in plan.rooms]
+    out: list[list[tuple[int, int]]] = [[] for _ in pieces]
+    for (k, j), walls in contacts_by_pair(shapes).items():
+        if k < len(pieces) <= j:
+            x0, y0, x1, y1 = pieces[k]
+            axis = "h" if (x1 - x0) >= (y1 - y0) else "v"
+            out[k] += [(w.lo, w.hi) for w in walls if w.axis == axis]
+    return out
+
+
+def _entrances(
+    plan: Plan, rng: np.random.Generator, lobby: int, annex: int, style: WingStyle, model: BuildingTypeModel
+) -> None:
+    """The main entrance in the lobby (or at a corridor end), side doors in halls, exits at corridor ends.
+
+    Other halls on the facade get a side door with the probability that makes their share of
+    doors to the outside the model's.
+    """
+    placed = False
+    p_side = min(1.0, model.connection(H, "outside") * model.stats(H).doors_mean)
+    for i, r in enumerate(plan.rooms):
+        if r.role not in ("lobby", "hall") or (i != lobby and rng.random() >= p_side):
+            continue
+        width = RULES.entrance if i == lobby else RULES.exit
+        for w in exterior_walls(plan, i):
+            if add_door(plan, i, None, w, min(width, w.length - 2 * RULES.margin), where="centre"):
+                placed = True
+                break
+    for i, r in enumerate(plan.rooms):
+        if r.role != "corridor":
+            continue
+        x0, y0, x1, y1 = r.rects[0]
+        across = "v" if (x1 - x0) >= (y1 - y0) else "h"
+        for w in exterior_walls(plan, i):
+            if w.axis == across and (not placed or rng.random() < style.exit_p):
+                width = min(RULES.exit, w.length - 2 * RULES.open_margin)
+                if width >= to_units(0.8) and add_door(
+                    plan, i, None, w, width, where="centre", margin=RULES.open_margin
+                ):
+                    placed = True
+    if not placed:
+        _any_entrance(plan, annex)
+
+
+def _any_entrance(plan: Plan, annex: int) -> None:
+    order = sorted(range(len(plan.rooms)), key=lambda i: (not plan.rooms[i].is_circulation, i == annex))
+    for i in order:
+        for w in exterior_walls(plan, i):
+            if add_door(plan, i, None, w, RULES.room, where="centre"):
+                return

@@ -1,0 +1,126 @@
+"""Architectural conventions of a building type that its room statistics do not carry."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+__all__ = ["OFFICE_STYLE", "SCHOOL_STYLE", "WingStyle"]
+
+
+@dataclass(frozen=True)
+class WingStyle:
+    """How a type lays out its wings; sizes come from the building-type model.
+
+    Attributes:
+        name: Name of the convention (the building type).
+        corridor_width_m: Range the model's corridor width is kept in (m).
+        room_depth_m: Range the depth of a strip of ordinary rooms is kept in (m).
+        shallow_depth_m: Range of the depth of a strip of small rooms (m).
+        wing_length_m: Typical length of a wing between two junctions (m); sets how many
+            wings the footprint is cut into.
+        side_weights: How often a corridor has ordinary rooms on both sides (``"double"``), on
+            one side only, its other side a facade (``"single"``), or small rooms on the other
+            side (``"shallow"``).
+        shapes: Relative frequency of each skeleton shape (see ``wings.skeleton.SHAPES``).
+        hall_rooms_p: Probability that a large hall has a strip of rooms along one side.
+        open_end_p: Probability that a dead-end corridor runs on to the facade (with an exit)
+            instead of ending at a small room.
+        exit_p: Probability that a corridor end on the facade has an exterior door.
+        core_rooms: Small rooms per service core side (a core is a short corridor with small
+            rooms on both sides).
+        service_functions: Functions of small rooms in service cores (taken from the model's
+            mix where it has them).
+        storage_functions: Functions of closets and rooms entered through other rooms.
+        end_functions: Functions of the small rooms that close dead-end corridors.
+        entrance_functions: Functions of the entrance hall.
+        annex: Function of a large hall added beside the wings (``"gym"`` for schools), or empty.
+        annex_area_m2: Range of the annex's area (m2).
+        required_functions: Functions every building of the type has (one room each at least).
+        max_extent_m: Longest side of the footprint (m); longer draws are redrawn.
+        min_area_m2: Smallest footprint the layout supports (m2).
+        max_area_m2: Largest footprint accepted (m2).
+    """
+
+    name: str
+    corridor_width_m: tuple[float, float]
+    room_depth_m: tuple[float, float]
+    shallow_depth_m: tuple[float, float]
+    wing_length_m: tuple[float, float]
+    side_weights: dict[str, float]
+    shapes: dict[str, float]
+    hall_rooms_p: float = 0.7
+    open_end_p: float = 0.6
+    exit_p: float = 0.6
+    core_rooms: tuple[int, int] = (2, 3)
+    service_functions: tuple[str, ...] = ("toilet", "washroom", "bathroom", "storage", "stairs", "elevator")
+    storage_functions: tuple[str, ...] = ("closet", "storage", "archive")
+    end_functions: tuple[str, ...] = ("stairs", "storage", "elevator")
+    entrance_functions: tuple[str, ...] = ("lobby", "entrance")
+    annex: str = ""
+    annex_area_m2: tuple[float, float] = (0.0, 0.0)
+    required_functions: tuple[str, ...] = field(default_factory=tuple)
+    max_extent_m: float = 110.0
+    min_area_m2: float = 300.0
+    max_area_m2: float = 50_000.0
+
+
+OFFICE_STYLE = WingStyle(
+    name="office",
+    corridor_width_m=(1.6, 2.6),
+    room_depth_m=(3.6, 7.0),
+    shallow_depth_m=(2.4, 3.6),
+    wing_length_m=(12.0, 22.0),
+    side_weights={"double": 0.15, "single": 0.8, "shallow": 0.05},
+    shapes={
+        "bar": 1.0,
+        "L": 1.2,
+        "T": 1.0,
+        "cross": 0.6,
+        "U": 1.0,
+        "H": 0.8,
+        "E": 0.8,
+        "comb": 0.8,
+        "court": 0.6,
+        "deep": 0.3,
+        "grid": 1.0,
+    },
+    open_end_p=0.6,
+    exit_p=0.6,
+    core_rooms=(2, 3),
+    min_area_m2=250.0,
+)
+"""Offices: double-loaded corridors of offices, service cores, entrance lobbies."""
+
+SCHOOL_STYLE = WingStyle(
+    name="school",
+    corridor_width_m=(2.2, 3.6),
+    room_depth_m=(6.5, 9.0),
+    shallow_depth_m=(3.2, 4.6),
+    wing_length_m=(18.0, 30.0),
+    side_weights={"double": 0.15, "single": 0.35, "shallow": 0.5},
+    shapes={
+        "bar": 1.0,
+        "L": 1.2,
+        "T": 1.0,
+        "cross": 0.4,
+        "U": 1.0,
+        "H": 0.8,
+        "E": 0.8,
+        "comb": 0.6,
+        "court": 1.0,
+        "deep": 0.3,
+        "grid": 1.0,
+    },
+    open_end_p=0.7,
+    exit_p=0.7,
+    core_rooms=(2, 3),
+    service_functions=("toilet", "washroom", "storage", "cleaning", "stairs", "closet"),
+    storage_functions=("closet", "storage"),
+    end_functions=("stairs", "storage", "cleaning"),
+    entrance_functions=("entrance", "atrium"),
+    annex="gym",
+    annex_area_m2=(250.0, 450.0),
+    required_functions=("gym", "lab"),
+    min_area_m2=800.0,
+)
+"""Schools: classrooms along long corridors, small service rooms opposite, halls, a gym."""

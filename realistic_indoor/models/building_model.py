@@ -1,0 +1,239 @@
+"""A building-type model: what the generator samples rooms, doors and functions from."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from functools import cache, lru_cache
+from importlib import resources
+from typing import TYPE_CHECKING, Any
+
+from realistic_indoor.building.labels import BuildingType, SemanticLabel, parse_building_type, parse_label
+from realistic_indoor.errors import ConfigError
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+
+    import numpy as np
+
+__all__ = ["OUTSIDE", "BuildingTypeModel", "LabelStats", "LocalStructures", "default_model"]
+
+OUTSIDE = "outside"
+"""Key of :attr:`BuildingTypeModel.connections` for exterior doors."""
+
+
+@dataclass(frozen=True)
+class LabelStats:
+    """Statistics of the rooms of one semantic label (one row of the paper's Table 1).
+
+    Attributes:
+        share: Fraction of the building's rooms with this label (0-1).
+        area_mean: Mean floor area, m2.
+        area_std: Standard deviation of the area, m2.
+        doors_mean: Mean number of doorways (exterior ones included).
+        doors_std: Standard deviation of the number of doorways.
+        axes_ratio_mean: Mean ratio of the bounding box's major to minor side (>= 1).
+        axes_ratio_std: Standard deviation of the axes ratio.
+    """
+
+    share: float
+    area_mean: float
+    area_std: float
+    doors_mean: float
+    doors_std: float
+    axes_ratio_mean: float
+    axes_ratio_std: float
+
+    def sample_area(self, rng: np.random.Generator, low: float = 0.0, high: float = math.inf) -> float:
+        """An area drawn from a log-normal with this mean and standard deviation, clipped (m2)."""
+        return float(min(max(_lognormal(rng, self.area_mean, self.area_std), low), high))
+
+    def sample_axes_ratio(self, rng: np.random.Generator, high: float = 20.0) -> float:
+        """An axes ratio: 1 plus a log-normal with this mean minus 1, clipped to ``high``."""
+        excess = max(self.axes_ratio_mean - 1.0, 1e-3)
+        return float(min(1.0 + _lognormal(rng, excess, self.axes_ratio_std), high))
+
+
+@dataclass(frozen=True)
+class LocalStructures:
+    """How often the recurring local structures of a building type occur (fractions 0-1).
+
+    Attributes:
+        closets_per_room: Small rooms entered only through a medium or big room (closets,
+            storage inside an office), per medium or big room.
+        connected_room_pairs: Share of medium and big rooms with a door to another medium or
+            big room (connecting doors between neighbouring rooms).
+        clustered_small_rooms: Share of small rooms that open onto the same corridor or hall as
+            at least two other small rooms (service cores: toilets, storage, stairs together).
+        junction_halls: Share of halls with doors to three or more corridors (halls at corridor
+            junctions rather than at the end of one corridor).
+    """
+
+    closets_per_room: float = 0.08
+    connected_room_pairs: float = 0.08
+    clustered_small_rooms: float = 0.6
+    junction_halls: float = 0.4
+
+
+@dataclass(frozen=True)
+class BuildingTypeModel:
+    """Statistics of one building type, from the paper's tables or fitted to real plans.
+
+    Attributes:
+        name: The type's name (``"office"``, ``"school"``, ``"house"``, or a user's ``"hospital"``).
+        labels: Statistics of each semantic label (every label present).
+        connections: Per semantic label, the fraction of its doorways that lead to rooms of each
+            label (keys are label values, plus :data:`OUTSIDE` for exterior doors).
+        functions: Per semantic label, the relative frequency of each functional label.
+        structures: Frequencies of the recurring local structures.
+        source: Where the numbers come from, in words.
+    """
+
+    name: str
+    labels: Mapping[SemanticLabel, LabelStats]
+    connections: Mapping[SemanticLabel, Mapping[str, float]]
+    functions: Mapping[SemanticLabel, Mapping[str, float]]
+    structures: LocalStructures = field(default_factory=LocalStructures)
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        missing = [lab.value for lab in SemanticLabel if lab not in self.labels]
+        if missing:
+            raise ConfigError(f"model {self.name!r} has no statistics for {', '.join(missing)}")
+        if sum(s.share for s in self.labels.values()) <= 0:
+            raise ConfigError(f"model {self.name!r}: label shares must not all be zero")
+
+    @property
+    def building_type(self) -> BuildingType:
+        """The :class:`BuildingType` named by :attr:`name` (``UNKNOWN`` for other types)."""
+        try:
+            return parse_building_type(self.name)
+        except ConfigError:
+            return BuildingType.UNKNOWN
+
+    def stats(self, label: SemanticLabel | str) -> LabelStats:
+        """Statistics of one semantic label."""
+        return self.labels[parse_label(label)]
+
+    def shares(self) -> dict[SemanticLabel, float]:
+        """Label shares normalised to sum to one."""
+        total = sum(s.share for s in self.labels.values())
+        return {lab: self.labels[lab].share / total for lab in SemanticLabel}
+
+    def mean_room_area(self) -> float:
+        """Expected floor area per room over all labels, m2 (total area / number of rooms)."""
+        return sum(p * self.labels[lab].area_mean for lab, p in self.shares().items())
+
+    def connection(self, label: SemanticLabel, target: str) -> float:
+        """Fraction of the doorways of ``label`` rooms that lead to ``target`` (a label value or ``outside``)."""
+        return float(self.connections.get(label, {}).get(target, 0.0))
+
+    def function_weights(self, label: SemanticLabel) -> dict[str, float]:
+        """Functional labels of ``label`` rooms with their weights (``{label value: 1}`` if unknown)."""
+        weights = {k: float(v) for k, v in self.functions.get(label, {}).items() if v > 0}
+        return weights or {label.value: 1.0}
+
+    def table(self) -> dict[SemanticLabel, dict[str, float]]:
+        """The model as a Table-1 style dict (keys of :func:`realistic_indoor.models.reference_table`)."""
+        out = {}
+        for lab, s in self.labels.items():
+            out[lab] = {
+                "share_pct": 100.0 * self.shares()[lab],
+                "area_mean": s.area_mean,
+                "area_std": s.area_std,
+                "doors_mean": s.doors_mean,
+                "doors_std": s.doors_std,
+                "axes_ratio_mean": s.axes_ratio_mean,
+                "axes_ratio_std": s.axes_ratio_std,
+            }
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        """The model as plain JSON-ready data (see :meth:`from_dict`)."""
+        return {
+            "name": self.name,
+            "source": self.source,
+            "labels": {lab.value: vars(s).copy() for lab, s in self.labels.items()},
+            "connections": {lab.value: dict(c) for lab, c in self.connections.items()},
+            "functions": {lab.value: dict(f) for lab, f in self.functions.items()},
+            "structures": vars(self.structures).copy(),
+        }
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> BuildingTypeModel:
+        """Rebuild a model from :meth:`to_dict` output.
+
+        Raises:
+            ConfigError: If a field is missing or malformed.
+        """
+        try:
+            labels = {parse_label(k): LabelStats(**v) for k, v in data["labels"].items()}
+            return cls(
+                name=str(data["name"]),
+                labels=labels,
+                connections={parse_label(k): dict(v) for k, v in data.get("connections", {}).items()},
+                functions={parse_label(k): dict(v) for k, v in data.get("functions", {}).items()},
+                structures=LocalStructures(**data.get("structures", {})),
+                source=str(data.get("source", "")),
+            )
+        except (KeyError, TypeError) as e:
+            raise ConfigError(f"malformed building-type model: {e}") from None
+
+
+def _lognormal(rng: np.random.Generator, mean: float, std: float) -> float:
+    """A draw from the log-normal with the given mean and standard deviation."""
+    if std <= 0:
+        return mean
+    sigma2 = math.log1p((std / mean) ** 2)
+    return float(rng.lognormal(math.log(mean) - sigma2 / 2, math.sqrt(sigma2)))
+
+
+@lru_cache(maxsize=1)
+def _model_data() -> dict[str, Any]:
+    text = resources.files("realistic_indoor").joinpath("data/building_models.json").read_text("utf-8")
+    return json.loads(text)
+
+
+@cache
+def default_model(building_type: str | BuildingType) -> BuildingTypeModel:
+    """The model of a paper type: Table 1 of the paper plus the package's function mixes.
+
+    Label statistics come from :func:`realistic_indoor.models.reference_table`; connections,
+    functional mixes and local-structure frequencies from package data
+    (``data/building_models.json``), estimated from the paper's facts and the shared real plans.
+
+    Args:
+        building_type: ``"office"``, ``"school"`` or ``"house"``.
+
+    Raises:
+        ConfigError: For any other type; the message lists the valid ones.
+    """
+    from realistic_indoor.models.reference import reference_table
+
+    key = parse_building_type(building_type).value
+    data = _model_data()["types"]
+    if key not in data:
+        raise ConfigError(f"no default model for {key!r}; valid: {', '.join(data)}")
+    table = reference_table(key)
+    labels = {
+        lab: LabelStats(
+            share=row["share_pct"] / 100.0,
+            area_mean=row["area_mean"],
+            area_std=row["area_std"],
+            doors_mean=row["doors_mean"],
+            doors_std=row["doors_std"],
+            axes_ratio_mean=row["axes_ratio_mean"],
+            axes_ratio_std=row["axes_ratio_std"],
+        )
+        for lab, row in table.items()
+    }
+    spec = data[key]
+    return BuildingTypeModel(
+        name=key,
+        labels=labels,
+        connections={parse_label(k): dict(v) for k, v in spec["connections"].items()},
+        functions={parse_label(k): dict(v) for k, v in spec["functions"].items()},
+        structures=LocalStructures(**spec["structures"]),
+        source="paper Table 1 (Amigoni et al., RoboCup 2014) + package function mixes",
+    )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import ToyOffice
+from env_helpers import ToyOffice
 
 from realistic_indoor.envs.explore import ExploreEnv
 from realistic_indoor.envs.rewards import RewardWeights, weighted_sum

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import shapely
-from conftest import TEST_AREAS_M2, ToyOffice, _has_generator
+from env_helpers import TEST_AREAS_M2, ToyOffice, _has_generator
 
 from realistic_indoor.envs.explore import ExploreEnv
 

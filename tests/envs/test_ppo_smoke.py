@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import make_env
+from env_helpers import make_env
 
 
 @pytest.mark.slow

@@ -6,7 +6,7 @@ import sys
 
 import gymnasium as gym
 import pytest
-from conftest import make_env
+from env_helpers import make_env
 
 from realistic_indoor.envs import RerunRecorder, record_rerun
 from realistic_indoor.errors import ConfigError

@@ -8,7 +8,7 @@ import warnings
 import gymnasium as gym
 import numpy as np
 import pytest
-from conftest import make_env
+from env_helpers import make_env
 from gymnasium.utils.env_checker import check_env, data_equivalence
 
 from realistic_indoor.envs import PRESETS
@@ -91,7 +91,7 @@ def test_env__truncates_exactly_at_the_step_limit(env_id):
 @pytest.mark.parametrize("mode", ["sync", "async"])
 @pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
 def test_env__runs_in_gym_make_vec(env_id, mode):
-    from conftest import ToyOffice
+    from env_helpers import ToyOffice
 
     envs = gym.make_vec(env_id, num_envs=2, vectorization_mode=mode, generator=ToyOffice(), max_steps=10)
     obs, _ = envs.reset(seed=0)

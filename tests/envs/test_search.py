@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 import shapely
-from conftest import ToyOffice
+from env_helpers import ToyOffice
 
 from realistic_indoor.envs.search import SearchEnv
 from realistic_indoor.errors import ConfigError

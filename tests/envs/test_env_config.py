@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import gymnasium as gym
 import pytest
-from conftest import ToyOffice, make_env
+from env_helpers import ToyOffice, make_env
 
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
 from realistic_indoor.envs import EnvConfig, ExploreEnv, preset_config

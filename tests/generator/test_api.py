@@ -13,7 +13,7 @@ from realistic_indoor.generator import (
 )
 from realistic_indoor.io.json_format import dumps
 
-TYPES = ["office"]
+TYPES = ["office", "school"]
 
 
 @pytest.mark.parametrize("kind", TYPES)

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.generator.doors import RULES, exterior_walls
-from realistic_indoor.generator.geometry import Contact, Rect
+from realistic_indoor.generator.geometry import Contact, Rect, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
 
 if TYPE_CHECKING:
@@ -37,6 +37,8 @@ def _free(plan: Plan, box: Rect) -> bool:
 def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: float) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 
+    Its far side holds a strip of small rooms that open onto it (changing rooms, storage).
+
     Tries the facades of corridors and halls in random order, each with the annex's long side
     along or across the facade, and keeps the first that overlaps nothing.
 
@@ -63,5 +65,26 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
             c0, c1 = (w.coord, w.coord + round(depth)) if sign > 0 else (w.coord - round(depth), w.coord)
             box = (c0, a, c1, b) if w.axis == "v" else (a, c0, b, c1)
             if min(b, w.hi) - max(a, w.lo) >= RULES.needed(RULES.hall) and _free(plan, box):
-                return plan.add(PlanRoom([box], SemanticLabel.HALL, function=style.annex, role="annex"))
+                return _place(plan, rng, style, box, w.axis, sign)
     return -1
+
+
+def _place(plan: Plan, rng: np.random.Generator, style: WingStyle, box: Rect, axis: str, sign: int) -> int:
+    """The annex hall, with a strip of small service rooms along its far side opening onto it."""
+    x0, y0, x1, y1 = box
+    depth = to_units(rng.uniform(2.6, 3.4))
+    if axis == "v":
+        hall = (x0, y0, x1 - depth, y1) if sign > 0 else (x0 + depth, y0, x1, y1)
+        strip, along = ((x1 - depth, x1) if sign > 0 else (x0, x0 + depth)), (y0, y1)
+    else:
+        hall = (x0, y0, x1, y1 - depth) if sign > 0 else (x0, y0 + depth, x1, y1)
+        strip, along = ((y1 - depth, y1) if sign > 0 else (y0, y0 + depth)), (x0, x1)
+    annex = plan.add(PlanRoom([hall], SemanticLabel.HALL, function=style.annex, role="annex"))
+    n = max(2, (along[1] - along[0]) // to_units(3.5))
+    cuts = [along[0] + (along[1] - along[0]) * k // n for k in range(n + 1)]
+    for k in range(n):
+        a, b = cuts[k], cuts[k + 1]
+        rect = (strip[0], a, strip[1], b) if axis == "v" else (a, strip[0], b, strip[1])
+        function = style.annex_functions[k % len(style.annex_functions)]
+        plan.add(PlanRoom([rect], SemanticLabel.SMALL, function=function, role="closet", host=annex))
+    return annex

@@ -33,7 +33,7 @@ if TYPE_CHECKING:
     from realistic_indoor.generator.wings.paint import Bay
     from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["BayContext", "Budget", "Unit", "core_shape", "subdivide"]
+__all__ = ["BayContext", "Budget", "Unit", "core_shape", "label_for_area", "subdivide"]
 
 S, M, B = SemanticLabel.SMALL, SemanticLabel.MEDIUM, SemanticLabel.BIG
 
@@ -43,8 +43,6 @@ MIN_ROOM = to_units(2.4)
 """Narrowest ordinary room (units)."""
 MIN_SMALL = to_units(1.5)
 """Narrowest small room (units)."""
-SHALLOW = to_units(3.2)
-"""Bays shallower than this hold small rooms and shallow medium rooms only (units)."""
 STUB_DEPTH = to_units(5.0)
 """Bays at least this deep get service cores with their own short corridor (units)."""
 
@@ -84,6 +82,7 @@ class BayContext:
         circulation: Rectangles of corridors and halls the bay's rooms may open onto.
         stub_width: Width of a service core's corridor (units).
         core_rows: Range of small rooms per side of a core.
+        shallow: Bays shallower than this hold small rooms and shallow medium rooms (units).
     """
 
     model: BuildingTypeModel
@@ -91,6 +90,7 @@ class BayContext:
     circulation: list[Rect]
     stub_width: int
     core_rows: tuple[int, int]
+    shallow: int
 
 
 @dataclass
@@ -173,7 +173,7 @@ def _core_unit(t: int, rng: np.random.Generator, ctx: BayContext, depth: int) ->
 def _plan_units(bay: Bay, rng: np.random.Generator, ctx: BayContext) -> list[Unit]:
     """Units from one end of the bay to the other, kinds drawn from the budget."""
     length, depth = bay.length, bay.depth
-    shallow = depth < SHALLOW
+    shallow = depth < ctx.shallow
     units: list[Unit] = []
     t = 0
     while length - t >= MIN_SMALL:
@@ -184,10 +184,8 @@ def _plan_units(bay: Bay, rng: np.random.Generator, ctx: BayContext) -> list[Uni
             kind = ctx.budget.pick(rng, kinds)
         unit = _make_unit(kind, t, rng, ctx, depth)
         last = unit.t1 > length - MIN_ROOM
-        if last and length - t < _min_width(unit):
-            rest = length - t
-            unit = Unit("M" if rest >= MIN_ROOM and not shallow else "S", t, length, S)
-            unit.label = M if unit.kind == "M" else S
+        if last and (length - t < _min_width(unit) or length - t < 0.6 * unit.width):
+            unit = _filler(ctx, t, length, depth, shallow)
         ctx.budget.take(unit.kind)
         units.append(unit)
         if last:
@@ -198,6 +196,20 @@ def _plan_units(bay: Bay, rng: np.random.Generator, ctx: BayContext) -> list[Uni
         units.append(Unit("S" if label is S else "M", 0, length, label))
     units[-1].t1 = length
     return units
+
+
+def _filler(ctx: BayContext, t0: int, t1: int, depth: int, shallow: bool) -> Unit:
+    """A plain room filling the end of a bay, labelled by its area."""
+    label = label_for_area(ctx.model, (t1 - t0) * depth)
+    if label is B and shallow:
+        label = M
+    return Unit({S: "S", M: "M", B: "B"}[label], t0, t1, label)
+
+
+def label_for_area(model: BuildingTypeModel, area_units: float) -> SemanticLabel:
+    """The ordinary label whose mean area is nearest ``area_units`` (square units) on a log scale."""
+    a = max(area_units / 100, 1e-6)
+    return min((S, M, B), key=lambda lab: abs(math.log(a / model.stats(lab).area_mean)))
 
 
 def _min_width(u: Unit) -> int:

@@ -14,7 +14,6 @@ from realistic_indoor.generator.plan import Plan, PlanRoom
 from realistic_indoor.generator.wings.annex import add_annex
 from realistic_indoor.generator.wings.bays import (
     DOOR_NEED,
-    SHALLOW,
     BayContext,
     Budget,
     core_shape,
@@ -55,8 +54,10 @@ def _dims(rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle) 
     style keeps both within the type's usual ranges.
     """
     c, m, s, h = (model.stats(lab) for lab in (C, M, S, H))
-    corridor = _clamp(math.sqrt(c.area_mean / max(c.axes_ratio_mean, 1.0)), style.corridor_width_m)
-    depth = _clamp(0.9 * math.sqrt(m.area_mean), style.room_depth_m)
+    corridor = _clamp(
+        style.corridor_scale * math.sqrt(c.area_mean / max(c.axes_ratio_mean, 1.0)), style.corridor_width_m
+    )
+    depth = _clamp(style.depth_scale * math.sqrt(m.area_mean), style.room_depth_m)
     shallow = _clamp(math.sqrt(s.area_mean), style.shallow_depth_m)
     return Dims(
         corridor=to_units(corridor * rng.uniform(0.9, 1.1)),
@@ -93,7 +94,9 @@ def _skeleton(
     return best
 
 
-def _budget(regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int]) -> Budget:
+def _budget(
+    regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int], shallow_depth: int
+) -> Budget:
     """Units the bays should hold so that the building matches the model's label shares.
 
     Small rooms come from corridor ends, closets, service cores (the model's clustered share),
@@ -101,8 +104,8 @@ def _budget(regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tu
     once the small ones are enough. The number of ordinary rooms is the one whose frontage
     fills the deep strips (found by bisection: the frontage grows with it).
     """
-    main = [b for b in regions.bays if b.depth >= SHALLOW]
-    shallow = [b for b in regions.bays if b.depth < SHALLOW]
+    main = [b for b in regions.bays if b.depth >= shallow_depth]
+    shallow = [b for b in regions.bays if b.depth < shallow_depth]
     length = sum(b.length for b in main)
     depth = sum(b.depth * b.length for b in main) / max(length, 1)
     s_length = sum(b.length for b in shallow)
@@ -175,14 +178,14 @@ def wing_plan(
         plan.add(PlanRoom(rects, H, role="hall"))
     circulation = regions.corridors + [r for _, rects in regions.halls for r in rects]
     stub = to_units(rng.uniform(1.3, 1.6))
-    ctx = BayContext(
-        model, _budget(regions, model, stub, style.core_rooms), circulation, stub, style.core_rooms
-    )
+    limit = (dims.depth + dims.shallow) // 2
+    budget = _budget(regions, model, stub, style.core_rooms, limit)
+    ctx = BayContext(model, budget, circulation, stub, style.core_rooms, limit)
     for k in rng.permutation(len(regions.bays)):
         subdivide(plan, regions.bays[int(k)], rng, ctx)
     for rect in regions.ends:
         plan.add(PlanRoom([rect], S, role="end"))
-    _corridors(plan, regions, model, rng, dims)
+    _corridors(plan, regions, model, rng, dims, style)
     annex = add_annex(plan, rng, style, annex_m2) if style.annex else -1
     connect_circulation(plan)
     _entrances(plan, rng, _lobby(plan), annex, style, model)
@@ -192,7 +195,34 @@ def wing_plan(
         style.service_functions, style.storage_functions, style.end_functions, style.entrance_functions, ()
     )
     assign_functions(plan, model, rng, roles)
+    _require(plan, style.required_functions)
     return plan, {"shape": sk.shape}
+
+
+def _require(plan: Plan, functions: tuple[str, ...]) -> None:
+    """Make sure each required function is present, giving it to the largest fitting room.
+
+    A missing gym takes the largest hall that is not the lobby, a missing lab the largest big
+    (else medium) room that opens onto a corridor.
+    """
+    present = {r.function for r in plan.rooms}
+    partners = plan.door_partners()
+    for function in functions:
+        if function in present:
+            continue
+        if function == "gym":
+            pool = [i for i, r in enumerate(plan.rooms) if r.label is H and r.role != "lobby"]
+        else:
+            pool = [
+                i
+                for i, r in enumerate(plan.rooms)
+                if r.label in (B, M)
+                and r.role == "room"
+                and any(j is not None and plan.rooms[j].label is C for j in partners[i])
+            ]
+            pool = [i for i in pool if plan.rooms[i].label is B] or pool
+        if pool:
+            plan.rooms[max(pool, key=lambda i: plan.rooms[i].area)].function = function
 
 
 def _lobby(plan: Plan) -> int:
@@ -215,13 +245,21 @@ def _lobby(plan: Plan) -> int:
 
 
 def _corridors(
-    plan: Plan, regions: Regions, model: BuildingTypeModel, rng: np.random.Generator, dims: Dims
+    plan: Plan,
+    regions: Regions,
+    model: BuildingTypeModel,
+    rng: np.random.Generator,
+    dims: Dims,
+    style: WingStyle,
 ) -> None:
-    """Cut the corridor lines into as many segments as the model's corridor share asks for."""
+    """Cut the corridor lines into segments, as many as the model's corridor share asks for.
+
+    The count is scaled by ``style.corridor_cuts``; stubs of service cores count as corridors.
+    """
     p = model.shares()
     others = sum(1 for r in plan.rooms if r.label is not C)
     stubs = sum(1 for r in plan.rooms if r.label is C)
-    want = round(0.9 * p[C] / max(1 - p[C], 1e-6) * others) - stubs
+    want = round(style.corridor_cuts * p[C] / max(1 - p[C], 1e-6) * others) - stubs
     junctions: list[Rect] = [r for _, rects in regions.halls for r in rects] + regions.corridors
     min_len = max(4 * dims.corridor, to_units(6.0))
     fronts = _fronts(plan, regions.corridors)

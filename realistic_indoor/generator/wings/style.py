@@ -15,6 +15,9 @@ class WingStyle:
         name: Name of the convention (the building type).
         corridor_width_m: Range the model's corridor width is kept in (m).
         room_depth_m: Range the depth of a strip of ordinary rooms is kept in (m).
+        depth_scale: Depth of a strip of ordinary rooms over the side of a square medium room.
+        corridor_scale: Corridor width over the width of a rectangle with the model's mean
+            corridor area and axes ratio.
         shallow_depth_m: Range of the depth of a strip of small rooms (m).
         wing_length_m: Typical length of a wing between two junctions (m); sets how many
             wings the footprint is cut into.
@@ -23,6 +26,9 @@ class WingStyle:
             side (``"shallow"``).
         shapes: Relative frequency of each skeleton shape (see ``wings.skeleton.SHAPES``).
         hall_rooms_p: Probability that a large hall has a strip of rooms along one side.
+        corridor_cuts: How many corridor segments to cut, as a share of the number the model's
+            corridor share asks for (real plans divide corridors at doors and width changes that
+            a generated corridor does not have, so fewer, longer segments match their sizes).
         open_end_p: Probability that a dead-end corridor runs on to the facade (with an exit)
             instead of ending at a small room.
         exit_p: Probability that a corridor end on the facade has an exterior door.
@@ -35,6 +41,7 @@ class WingStyle:
         entrance_functions: Functions of the entrance hall.
         annex: Function of a large hall added beside the wings (``"gym"`` for schools), or empty.
         annex_area_m2: Range of the annex's area (m2).
+        annex_functions: Functions of the small rooms along the annex's far side, in turn.
         required_functions: Functions every building of the type has (one room each at least).
         max_extent_m: Longest side of the footprint (m); longer draws are redrawn.
         min_area_m2: Smallest footprint the layout supports (m2).
@@ -48,6 +55,9 @@ class WingStyle:
     wing_length_m: tuple[float, float]
     side_weights: dict[str, float]
     shapes: dict[str, float]
+    depth_scale: float = 1.0
+    corridor_scale: float = 1.0
+    corridor_cuts: float = 1.0
     hall_rooms_p: float = 0.7
     open_end_p: float = 0.6
     exit_p: float = 0.6
@@ -58,6 +68,7 @@ class WingStyle:
     entrance_functions: tuple[str, ...] = ("lobby", "entrance")
     annex: str = ""
     annex_area_m2: tuple[float, float] = (0.0, 0.0)
+    annex_functions: tuple[str, ...] = ("washroom", "washroom", "storage")
     required_functions: tuple[str, ...] = field(default_factory=tuple)
     max_extent_m: float = 110.0
     min_area_m2: float = 300.0
@@ -71,6 +82,8 @@ OFFICE_STYLE = WingStyle(
     shallow_depth_m=(2.4, 3.6),
     wing_length_m=(12.0, 22.0),
     side_weights={"double": 0.15, "single": 0.8, "shallow": 0.05},
+    depth_scale=0.9,
+    corridor_cuts=0.9,
     shapes={
         "bar": 1.0,
         "L": 1.2,
@@ -98,6 +111,8 @@ SCHOOL_STYLE = WingStyle(
     shallow_depth_m=(3.2, 4.6),
     wing_length_m=(18.0, 30.0),
     side_weights={"double": 0.15, "single": 0.35, "shallow": 0.5},
+    depth_scale=1.05,
+    corridor_scale=1.2,
     shapes={
         "bar": 1.0,
         "L": 1.2,

@@ -1,0 +1,54 @@
+"""Structures of real schools: classrooms along long corridors, large halls, labs and a gym."""
+
+from realistic_indoor.building import SemanticLabel
+
+C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
+
+
+def _long_side(room):
+    x0, y0, x1, y1 = room.bounds
+    return max(x1 - x0, y1 - y0)
+
+
+def test_school__classrooms_open_onto_corridors(samples):
+    on_corridor = classrooms = 0
+    for b in samples("school"):
+        for r in b.rooms:
+            if r.function == "classroom":
+                classrooms += 1
+                on_corridor += any(
+                    d.other(r.id) and b.room(d.other(r.id)).label is C for d in b.doors_of[r.id]
+                )
+    assert classrooms and on_corridor / classrooms >= 0.9
+
+
+def test_school__classroom_corridors_are_long(samples):
+    lengths = []
+    for b in samples("school"):
+        for r in b.rooms:
+            if r.function == "classroom":
+                for d in b.doors_of[r.id]:
+                    other = d.other(r.id)
+                    if other and b.room(other).label is C:
+                        lengths.append(_long_side(b.room(other)))
+    assert sum(lengths) / len(lengths) >= 10.0
+
+
+def test_school__every_school_has_a_large_hall_a_lab_and_a_gym(samples):
+    for b in samples("school"):
+        functions = {r.function for r in b.rooms}
+        assert {"gym", "lab"} <= functions, b.metadata
+        assert any(r.label is H and r.area >= 150.0 for r in b.rooms), b.metadata
+
+
+def test_school__the_gym_is_a_hall_reached_from_circulation(samples):
+    for b in samples("school"):
+        gym = next(r for r in b.rooms if r.function == "gym")
+        assert gym.label in (H, SemanticLabel.BIG)
+        assert any(d.other(gym.id) and b.room(d.other(gym.id)).label in (C, H) for d in b.doors_of[gym.id])
+
+
+def test_school__small_rooms_outnumber_classrooms(samples):
+    small = sum(r.label is SemanticLabel.SMALL for b in samples("school") for r in b.rooms)
+    medium = sum(r.label is SemanticLabel.MEDIUM for b in samples("school") for r in b.rooms)
+    assert small > 2 * medium

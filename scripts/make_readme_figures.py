@@ -2,7 +2,7 @@
 
 Writes ``real_office.png`` (a real office from ``../shared``) and, once the generator exists,
 ``generated_office.png``, ``generated_school.png``, ``generated_house.png`` and
-``random_baseline.png``. What cannot be made yet (no shared data, no generator) is skipped and
+``random_baseline.png`` (the World-Generator-like random map). What cannot be made yet (no shared data, no generator) is skipped and
 said so. Every picture is checked to stay under the README's size budget.
 
 Usage::
@@ -35,30 +35,22 @@ def real_office(seed: int):
     return read(REAL_OFFICE, infer_entrances=True)
 
 
-def _generated(building_type: str) -> Callable[[int], object]:
+def _generated(name: str) -> Callable[[int], object]:
+    """A maker of a generated building (``name``: office, school, house, or random)."""
+
     def make(seed: int):
-        generate = _attribute("realistic_indoor.generator", "generate")
-        return generate(building_type, seed=seed)
+        from realistic_indoor.errors import ConfigError
 
-    make.__doc__ = f"A generated {building_type}."
+        try:
+            generate = importlib.import_module("realistic_indoor.generator").generate
+        except (ImportError, AttributeError) as e:
+            raise LookupError(f"realistic_indoor.generator.generate is not there yet ({e})") from None
+        try:
+            return generate(name, seed=seed)
+        except ConfigError as e:
+            raise LookupError(str(e)) from None
+
     return make
-
-
-def random_baseline(seed: int):
-    """A World-Generator-like random map, the baseline the realistic generator is compared with."""
-    baseline = _attribute("realistic_indoor.generator", "random_baseline")
-    return baseline(seed=seed)
-
-
-def _attribute(module: str, name: str):
-    """``module.name``, or ``LookupError`` saying it does not exist yet."""
-    try:
-        found = getattr(importlib.import_module(module), name, None)
-    except ImportError as e:
-        raise LookupError(f"{module} cannot be imported ({e})") from None
-    if found is None:
-        raise LookupError(f"{module}.{name} does not exist yet")
-    return found
 
 
 FIGURES: dict[str, Callable[[int], object]] = {
@@ -66,7 +58,7 @@ FIGURES: dict[str, Callable[[int], object]] = {
     "generated_office.png": _generated("office"),
     "generated_school.png": _generated("school"),
     "generated_house.png": _generated("house"),
-    "random_baseline.png": random_baseline,
+    "random_baseline.png": _generated("random"),
 }
 
 

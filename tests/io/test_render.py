@@ -99,7 +99,7 @@ def test_render__legend_lists_every_label_with_counts(tiny_office):
 
 def test_render__title_automatic_custom_or_none(tiny_office):
     auto = draw_plan(tiny_office).get_title(loc="left")
-    assert "hand-made" in auto and "3 rooms" in auto and "3 doors (1 exterior)" in auto and "60 m²" in auto
+    assert "generator: hand-made" in auto and "3 rooms" in auto and "3 doors (1 exterior)" in auto and "60 m²" in auto
     assert draw_plan(tiny_office, title="Ground floor").get_title(loc="left") == "Ground floor"
     assert draw_plan(tiny_office, title=False).get_title(loc="left") == ""
 
@@ -167,4 +167,4 @@ def test_render__title_names_the_plan(tiny_office):
     from_file = replace(tiny_office, metadata={"source": "/data/plans/Off-3.xml"})
     assert auto_title(from_file).splitlines()[0] == "Off-3"
     generated = replace(tiny_office, metadata={"generator": "office", "seed": 7})
-    assert auto_title(generated).splitlines()[0] == "office (seed 7)"
+    assert auto_title(generated).splitlines()[0] == "generator: office, seed 7"

@@ -33,7 +33,7 @@ def auto_title(building: Building) -> str:
         name = Path(str(meta["source"])).stem
     elif meta.get("generator"):
         seed = meta.get("seed")
-        name = f"{meta['generator']}" + (f" (seed {seed})" if seed is not None else "")
+        name = f"generator: {meta['generator']}" + (f", seed {seed}" if seed is not None else "")
     else:
         name = "building"
     counts = (

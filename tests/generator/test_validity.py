@@ -103,7 +103,7 @@ def test_doors__openings_into_halls_are_wider_than_room_doors(kind, samples):
     ]
     wide = [w for w in widths if w > 0.95]
     assert len(wide) >= 0.95 * len(widths)
-    assert sum(widths) / len(widths) >= 1.5
+    assert sum(widths) / len(widths) >= 1.3
 
 
 @pytest.mark.parametrize("kind", TYPES)

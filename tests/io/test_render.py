@@ -99,7 +99,12 @@ def test_render__legend_lists_every_label_with_counts(tiny_office):
 
 def test_render__title_automatic_custom_or_none(tiny_office):
     auto = draw_plan(tiny_office).get_title(loc="left")
-    assert "generator: hand-made" in auto and "3 rooms" in auto and "3 doors (1 exterior)" in auto and "60 m²" in auto
+    assert (
+        "generator: hand-made" in auto
+        and "3 rooms" in auto
+        and "3 doors (1 exterior)" in auto
+        and "60 m²" in auto
+    )
     assert draw_plan(tiny_office, title="Ground floor").get_title(loc="left") == "Ground floor"
     assert draw_plan(tiny_office, title=False).get_title(loc="left") == ""
 
@@ -168,3 +173,16 @@ def test_render__title_names_the_plan(tiny_office):
     assert auto_title(from_file).splitlines()[0] == "Off-3"
     generated = replace(tiny_office, metadata={"generator": "office", "seed": 7})
     assert auto_title(generated).splitlines()[0] == "generator: office, seed 7"
+
+
+def test_render__every_shared_real_plan(real_plans_dir):
+    from realistic_indoor.io import load
+
+    plans = sorted(real_plans_dir.glob("*/*.xml"))
+    assert len(plans) >= 50
+    for plan in plans:
+        building = load(plan, infer_entrances=True)
+        image = render_array(building, size_in=3, dpi=30, title=False, legend=False)
+        assert image.shape[2] == 3 and max(image.shape[:2]) >= 3 * 30, plan.name
+        fill = _rgb(LABEL_COLOURS[building.rooms[0].label])
+        assert (np.abs(image.reshape(-1, 3).astype(int) - fill).max(axis=1) <= 2).any(), plan.name

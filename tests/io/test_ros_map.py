@@ -167,3 +167,22 @@ def test_ros_map__resolution_option_and_pgm_path(tiny_office, tmp_path):
 def test_ros_map__bad_resolution_is_a_config_error(tiny_office, tmp_path):
     with pytest.raises(ConfigError, match="resolution_m"):
         save(tiny_office, tmp_path / "m.yaml", resolution_m=-1.0)
+
+
+@pytest.mark.parametrize("plan", ["office/Off-2.xml", "school/stjoseph'scatholichighschool_updated.xml"])
+def test_ros_map__real_plan_navigable_through_every_door(real_plans_dir, tmp_path, plan):
+    from scipy import ndimage
+
+    from realistic_indoor.io import load
+
+    building = load(real_plans_dir / plan)
+    image_path, yaml_path = save(building, tmp_path / "real.yaml")
+    image, meta = _read_pgm(image_path), _read_yaml(yaml_path)
+    regions, _ = ndimage.label(image == FREE_PX, structure=np.ones((3, 3)))
+    region = {}
+    for room in building.rooms:
+        p = room.polygon.representative_point()
+        region[room.id] = regions[_ros_pixel(meta, image, p.x, p.y)]
+    assert all(region.values()), "every room's interior is free"
+    blocked = [d.id for d in building.doors if not d.is_exterior and region[d.room_a] != region[d.room_b]]
+    assert not blocked, f"doors closed on the map: {blocked[:5]}"

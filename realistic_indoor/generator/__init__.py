@@ -19,6 +19,7 @@ import numpy as np
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, GENERATOR_NAMES, Generator
+from realistic_indoor.generator.house import HouseGenerator
 from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
 
 if TYPE_CHECKING:
@@ -28,6 +29,7 @@ __all__ = [
     "DEFAULT_AREAS_M2",
     "GENERATOR_NAMES",
     "Generator",
+    "HouseGenerator",
     "OfficeGenerator",
     "SchoolGenerator",
     "generate",
@@ -51,7 +53,7 @@ def make_generator(name: str, area_m2: float | None = None, **options: Any) -> G
         ConfigError: For an unknown name (the message lists the valid ones) or bad values.
     """
     key = str(name).strip().lower()
-    classes = {"office": OfficeGenerator, "school": SchoolGenerator}
+    classes = {"office": OfficeGenerator, "school": SchoolGenerator, "house": HouseGenerator}
     if key not in classes and options.get("model") is not None:
         key = "office"
     if key not in classes:

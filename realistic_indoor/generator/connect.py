@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from realistic_indoor.generator.plan import Plan
     from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["connect_circulation", "connect_rooms", "ensure_reachable"]
+__all__ = ["break_mazes", "connect_circulation", "connect_rooms", "ensure_reachable"]
 
 C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
 
@@ -193,3 +193,43 @@ def ensure_reachable(plan: Plan, rng: np.random.Generator) -> None:
             raise RealisticIndoorError(
                 f"generator could not reach {len(lost)} rooms (a bug: please report the seed)"
             )
+
+
+def break_mazes(plan: Plan, rng: np.random.Generator, min_rooms: int = 3) -> None:
+    """Give room mazes a second way out.
+
+    A maze is a group of at least ``min_rooms`` ordinary rooms joined by doors among themselves
+    of which at most one opens onto a corridor, a hall or outside (the validator's definition);
+    one of its other rooms gets a door to a corridor or hall it touches, else to the outside.
+    """
+    ordinary = [i for i, r in enumerate(plan.rooms) if r.label in ROOM_LABELS]
+    group = {i: i for i in ordinary}
+
+    def find(i: int) -> int:
+        while group[i] != i:
+            group[i] = group[group[i]]
+            i = group[i]
+        return i
+
+    gateway = set()
+    for d in plan.doors:
+        if d.b is not None and d.a in group and d.b in group:
+            group[find(d.a)] = find(d.b)
+        for i, j in ((d.a, d.b), (d.b, d.a)):
+            if i in group and (j is None or plan.rooms[j].is_circulation):
+                gateway.add(i)
+    members: dict[int, list[int]] = {}
+    for i in ordinary:
+        members.setdefault(find(i), []).append(i)
+    neighbours = plan.neighbours()
+    for rooms in members.values():
+        if len(rooms) < min_rooms or sum(i in gateway for i in rooms) > 1:
+            continue
+        for i in (i for i in rooms if i not in gateway):
+            circ = [j for j in neighbours[i] if plan.rooms[j].is_circulation]
+            if any(_door_to(plan, i, j, rng, RULES.room) for j in circ) or any(
+                add_door(plan, i, None, w, RULES.room, rng)
+                for w in exterior_walls(plan, i)
+                if door_fits(w, RULES.room)
+            ):
+                break

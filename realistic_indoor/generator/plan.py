@@ -146,12 +146,16 @@ class Plan:
         return out
 
     def reachable(self) -> list[bool]:
-        """Which rooms can be reached through doors from an exterior door."""
+        """Which rooms can be reached through doors from the first exterior door (the main entrance).
+
+        Rooms behind another exterior door but cut off from the main entrance count as
+        unreachable, so that the building comes out in one piece.
+        """
         adj: list[list[int]] = [[] for _ in self.rooms]
         frontier = []
         for d in self.doors:
             if d.b is None:
-                frontier.append(d.a)
+                frontier = frontier or [d.a]
             else:
                 adj[d.a].append(d.b)
                 adj[d.b].append(d.a)

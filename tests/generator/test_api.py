@@ -13,7 +13,7 @@ from realistic_indoor.generator import (
 )
 from realistic_indoor.io.json_format import dumps
 
-TYPES = ["office", "school"]
+TYPES = ["office", "school", "house"]
 
 
 @pytest.mark.parametrize("kind", TYPES)
@@ -95,3 +95,10 @@ def test_make_generator__unknown_option_is_a_config_error():
 def test_generate__rejects_bad_seeds(seed):
     with pytest.raises(ConfigError, match="seed"):
         generate("office", 500, seed=seed)
+
+
+def test_make_generator__a_house_has_its_own_limits():
+    with pytest.raises(ConfigError, match="smallest is 50 m2"):
+        make_generator("house", 20)
+    with pytest.raises(ConfigError, match="largest is 1000 m2"):
+        make_generator("house", 10_000)

@@ -7,7 +7,7 @@ from realistic_indoor.models import reference_table
 from realistic_indoor.validator.connectivity import Connectivity, connectivity
 from realistic_indoor.validator.tables import label_table
 
-TYPES = ["office", "school"]
+TYPES = ["office", "school", "house"]
 C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
 
 

@@ -9,8 +9,12 @@ from realistic_indoor.building import check_building
 from realistic_indoor.generator import make_generator
 from realistic_indoor.validator.connectivity import room_mazes
 
-TYPES = ["office", "school"]
-SIZES = {"office": [250, 600, 1200, 3500, 6000, 10_000], "school": [800, 1500, 3000, 6000, 10_000]}
+TYPES = ["office", "school", "house"]
+SIZES = {
+    "office": [250, 600, 1200, 3500, 6000, 10_000],
+    "school": [800, 1500, 3000, 6000, 10_000],
+    "house": [50, 100, 300, 600, 1000],
+}
 SLOW_SEEDS = 1000
 
 

@@ -4,12 +4,26 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from realistic_indoor.generator.geometry import Rect
+from realistic_indoor.generator.geometry import Rect, contacts_by_pair
 
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["segment_corridors"]
+    from realistic_indoor.generator.plan import Plan
+
+__all__ = ["corridor_fronts", "segment_corridors"]
+
+
+def corridor_fronts(plan: Plan, pieces: list[Rect]) -> list[list[tuple[int, int]]]:
+    """For each corridor piece, the spans along it of the plan's rooms touching its long sides."""
+    shapes = [[p] for p in pieces] + [r.rects for r in plan.rooms]
+    out: list[list[tuple[int, int]]] = [[] for _ in pieces]
+    for (k, j), walls in contacts_by_pair(shapes).items():
+        if k < len(pieces) <= j:
+            x0, y0, x1, y1 = pieces[k]
+            axis = "h" if (x1 - x0) >= (y1 - y0) else "v"
+            out[k] += [(w.lo, w.hi) for w in walls if w.axis == axis]
+    return out
 
 
 def _long(r: Rect) -> tuple[int, int, bool]:

@@ -6,10 +6,15 @@ import math
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
-from realistic_indoor.generator.connect import connect_circulation, connect_rooms, ensure_reachable
+from realistic_indoor.generator.connect import (
+    break_mazes,
+    connect_circulation,
+    connect_rooms,
+    ensure_reachable,
+)
 from realistic_indoor.generator.doors import RULES, add_door, exterior_walls
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
-from realistic_indoor.generator.geometry import Rect, contacts_by_pair, to_units
+from realistic_indoor.generator.geometry import Rect, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
 from realistic_indoor.generator.wings.annex import add_annex
 from realistic_indoor.generator.wings.bays import (
@@ -19,7 +24,7 @@ from realistic_indoor.generator.wings.bays import (
     core_shape,
     subdivide,
 )
-from realistic_indoor.generator.wings.corridors import segment_corridors
+from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
 from realistic_indoor.generator.wings.halls import carve_hall_bays
 from realistic_indoor.generator.wings.paint import Regions, paint
 from realistic_indoor.generator.wings.sizing import MIN_GAP_M, Dims, size_skeleton
@@ -191,6 +196,7 @@ def wing_plan(
     _entrances(plan, rng, _lobby(plan), annex, style, model)
     connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
     ensure_reachable(plan, rng)
+    break_mazes(plan, rng)
     roles = FunctionRoles(
         style.service_functions, style.storage_functions, style.end_functions, style.entrance_functions, ()
     )
@@ -262,21 +268,9 @@ def _corridors(
     want = round(style.corridor_cuts * p[C] / max(1 - p[C], 1e-6) * others) - stubs
     junctions: list[Rect] = [r for _, rects in regions.halls for r in rects] + regions.corridors
     min_len = max(4 * dims.corridor, to_units(6.0))
-    fronts = _fronts(plan, regions.corridors)
+    fronts = corridor_fronts(plan, regions.corridors)
     for seg in segment_corridors(regions.corridors, want, rng, min_len, junctions, fronts, DOOR_NEED):
         plan.add(PlanRoom([seg], C, role="corridor"))
-
-
-def _fronts(plan: Plan, pieces: list[Rect]) -> list[list[tuple[int, int]]]:
-    """For each corridor piece, the spans along it of the rooms touching its long sides."""
-    shapes = [[p] for p in pieces] + [r.rects for r in plan.rooms]
-    out: list[list[tuple[int, int]]] = [[] for _ in pieces]
-    for (k, j), walls in contacts_by_pair(shapes).items():
-        if k < len(pieces) <= j:
-            x0, y0, x1, y1 = pieces[k]
-            axis = "h" if (x1 - x0) >= (y1 - y0) else "v"
-            out[k] += [(w.lo, w.hi) for w in walls if w.axis == axis]
-    return out
 
 
 def _entrances(

@@ -334,7 +334,7 @@ def _band(plan: Plan, rooms: list, box: Rect, hallway_above: bool) -> None:
     x0, y0, x1, y1 = box
     x = x0
     ids = []
-    for (label, function, area), w in zip(rooms, _widths(rooms, x1 - x0, y1 - y0), strict=True):
+    for (label, function, _), w in zip(rooms, _widths(rooms, x1 - x0, y1 - y0), strict=True):
         ids.append(plan.add(PlanRoom([(x, y0, x + w, y1)], label, function=function, role="room")))
         x += w
     for k, i in enumerate(ids):

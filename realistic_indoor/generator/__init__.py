@@ -20,6 +20,7 @@ import numpy as np
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, GENERATOR_NAMES, Generator
 from realistic_indoor.generator.house import HouseGenerator
+from realistic_indoor.generator.random_grid import RandomGridGenerator
 from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
 
 if TYPE_CHECKING:
@@ -31,6 +32,7 @@ __all__ = [
     "Generator",
     "HouseGenerator",
     "OfficeGenerator",
+    "RandomGridGenerator",
     "SchoolGenerator",
     "generate",
     "make_generator",
@@ -53,6 +55,8 @@ def make_generator(name: str, area_m2: float | None = None, **options: Any) -> G
         ConfigError: For an unknown name (the message lists the valid ones) or bad values.
     """
     key = str(name).strip().lower()
+    if key == "random":
+        return _random_grid(area_m2, options)
     classes = {"office": OfficeGenerator, "school": SchoolGenerator, "house": HouseGenerator}
     if key not in classes and options.get("model") is not None:
         key = "office"
@@ -63,6 +67,20 @@ def make_generator(name: str, area_m2: float | None = None, **options: Any) -> G
         return cls(area_m2=DEFAULT_AREAS_M2[key] if area_m2 is None else area_m2, **options)
     except TypeError as e:
         raise ConfigError(f"bad option for the {key} generator: {e}") from None
+
+
+def _random_grid(area_m2: float | None, options: dict[str, Any]) -> RandomGridGenerator:
+    """The baseline from a grid size (``width_units``/``height_units``) or from an area."""
+    unknown = set(options) - {"width_units", "height_units"}
+    if unknown:
+        raise ConfigError(f"bad option for the random generator: {', '.join(sorted(unknown))}")
+    if options:
+        if area_m2 is not None:
+            raise ConfigError(
+                "give the random generator either an area or width_units/height_units, not both"
+            )
+        return RandomGridGenerator(**options)
+    return RandomGridGenerator.from_area(DEFAULT_AREAS_M2["random"] if area_m2 is None else area_m2)
 
 
 def generate(name: str, area_m2: float | None = None, seed: int | None = None, **options: Any) -> Building:

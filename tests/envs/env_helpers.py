@@ -53,36 +53,13 @@ TEST_AREAS_M2 = {"office": 300.0, "school": 800.0, "house": 100.0, "random": 300
 
 
 def make_env(env_id: str, **kwargs):
-    """``gym.make(env_id)`` on a small building of the id's type with a short step limit.
-
-    Uses the id's own generator with a small area; the toy generator stands in for a type
-    whose generator does not exist yet (``make_generator`` names it unknown).
-    """
+    """``gym.make(env_id)`` on a small building of the id's type, with a short step limit."""
     import gymnasium as gym
 
     from realistic_indoor.envs import PRESETS
 
     kwargs.setdefault("max_steps", 50)
-    building_type = kwargs.get("building_type", PRESETS[env_id].kwargs["building_type"])
     if not {"generator", "building", "plan_path"} & set(kwargs):
-        if _has_generator(building_type):
-            kwargs.setdefault("area_m2", TEST_AREAS_M2[building_type])
-        else:
-            kwargs["generator"] = ToyOffice()
+        building_type = kwargs.get("building_type", PRESETS[env_id].kwargs["building_type"])
+        kwargs.setdefault("area_m2", TEST_AREAS_M2[building_type])
     return gym.make(env_id, **kwargs)
-
-
-def _has_generator(building_type: str) -> bool:
-    from realistic_indoor.errors import ConfigError
-
-    try:
-        from realistic_indoor.generator import make_generator
-
-        make_generator(building_type, area_m2=TEST_AREAS_M2[building_type])
-    except ImportError:
-        return False
-    except ConfigError as e:
-        if "unknown generator" in str(e):
-            return False
-        raise
-    return True

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import shapely
-from env_helpers import TEST_AREAS_M2, ToyOffice, _has_generator
+from env_helpers import TEST_AREAS_M2, ToyOffice
 
 from realistic_indoor.envs.explore import ExploreEnv
 
@@ -14,11 +14,7 @@ STEPS_PER_SOURCE = 20_000
 
 
 SOURCES = [pytest.param({"generator": ToyOffice(n_rooms=3)}, id="toy")] + [
-    pytest.param(
-        {"building_type": t, "area_m2": TEST_AREAS_M2[t]},
-        id=t,
-        marks=pytest.mark.skipif(not _has_generator(t), reason=f"no {t} generator yet"),
-    )
+    pytest.param({"building_type": t, "area_m2": TEST_AREAS_M2[t]}, id=t)
     for t in ("office", "school", "house", "random")
 ]
 

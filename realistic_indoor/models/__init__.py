@@ -6,6 +6,7 @@ from realistic_indoor.models.building_model import (
     LocalStructures,
     default_model,
 )
+from realistic_indoor.models.fit import fit_model
 from realistic_indoor.models.reference import REFERENCE_SETS, connectivity_facts, reference_table
 
 __all__ = [
@@ -15,5 +16,6 @@ __all__ = [
     "LocalStructures",
     "connectivity_facts",
     "default_model",
+    "fit_model",
     "reference_table",
 ]

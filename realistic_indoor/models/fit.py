@@ -1,0 +1,175 @@
+"""Learning a building-type model from a set of plans (real ones, or another generator's)."""
+
+from __future__ import annotations
+
+from collections import Counter
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from realistic_indoor.building.labels import ROOM_LABELS, BuildingType, SemanticLabel
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.models.building_model import OUTSIDE, BuildingTypeModel, LabelStats, LocalStructures
+
+if TYPE_CHECKING:
+    from collections.abc import Iterable
+
+    from realistic_indoor.building.building import Building
+
+__all__ = ["fit_model"]
+
+C, H, S = SemanticLabel.CORRIDOR, SemanticLabel.HALL, SemanticLabel.SMALL
+
+
+def fit_model(
+    buildings: Iterable[Building], *, name: str | None = None, skip_misscaled: bool = True
+) -> BuildingTypeModel:
+    """Fit a building-type model to plans.
+
+    Everything the generators use is measured: the share, area, axes ratio and door count of
+    each semantic label; the labels each label's doorways lead to; each label's functional
+    labels; and how often the recurring local structures occur (closets, connected room pairs,
+    clustered small rooms, halls at junctions). A generator given the model
+    (``make_generator(name, model=...)``) then builds buildings with these statistics.
+
+    Args:
+        buildings: The plans (with semantic labels; infer them first where they lack them).
+        name: The type's name (default: the plans' common building type, else ``"unknown"``).
+        skip_misscaled: Leave plans whose scale looks wrong out of the area statistics (see
+            :func:`realistic_indoor.validator.scale.scale_check`); their scale-free statistics
+            (shares, doors, axes ratios, connections) still count.
+
+    Returns:
+        The fitted model. A label no plan has gets share 0 and the statistics of all real
+        buildings (the paper's ``all_types``), so a generator can still size it.
+
+    Raises:
+        ConfigError: If the plans hold no rooms.
+
+    Examples:
+        >>> from realistic_indoor.generator import generate
+        >>> model = fit_model([generate("office", 600, seed=s) for s in range(3)])
+        >>> model.name, round(sum(s.share for s in model.labels.values()), 6)
+        ('office', 1.0)
+    """
+    plans = list(buildings)
+    rooms = [(b, r) for b in plans for r in b.rooms]
+    if not rooms:
+        raise ConfigError("cannot fit a model to plans without rooms; give at least one plan with rooms")
+    scaled = _well_scaled(plans) if skip_misscaled else plans
+    types = {b.building_type for b in plans}
+    if name is None:
+        name = next(iter(types)).value if len(types) == 1 else BuildingType.UNKNOWN.value
+    return BuildingTypeModel(
+        name=name,
+        labels=_label_stats(plans, scaled),
+        connections=_connections(plans),
+        functions=_functions(plans),
+        structures=_structures(plans),
+        source=f"fitted to {len(plans)} plans ({len(scaled)} with plausible scales)",
+    )
+
+
+def _well_scaled(plans: list[Building]) -> list[Building]:
+    from realistic_indoor.validator.scale import scale_check
+
+    kept = [b for b in plans if scale_check(b) is None]
+    return kept or plans
+
+
+def _mean_std(values: list[float]) -> tuple[float, float]:
+    arr = np.asarray(values, dtype=float)
+    return float(arr.mean()), float(arr.std())
+
+
+def _label_stats(plans: list[Building], scaled: list[Building]) -> dict[SemanticLabel, LabelStats]:
+    from realistic_indoor.models.reference import reference_table
+
+    fallback = reference_table("all_types")
+    counts = Counter(r.label for b in plans for r in b.rooms)
+    total = sum(counts.values())
+    out = {}
+    for lab in SemanticLabel:
+        rows = [(b, r) for b in plans for r in b.rooms if r.label is lab]
+        areas = [r.area for b in scaled for r in b.rooms if r.label is lab]
+        if not rows:
+            ref = {k: v for k, v in fallback[lab].items() if k != "share_pct"}
+            out[lab] = LabelStats(share=0.0, **ref)
+            continue
+        area = _mean_std(areas or [r.area for _, r in rows])
+        doors = _mean_std([len(b.doors_of[r.id]) for b, r in rows])
+        ratio = _mean_std([min(r.axes_ratio, 50.0) for _, r in rows])
+        out[lab] = LabelStats(counts[lab] / total, *area, *doors, *ratio)
+    return out
+
+
+def _target(b: Building, rid: str, door) -> str:
+    other = door.other(rid)
+    return OUTSIDE if other is None or other not in b.room_by_id else b.room(other).label.value
+
+
+def _connections(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
+    counts: dict[SemanticLabel, Counter] = {lab: Counter() for lab in SemanticLabel}
+    for b in plans:
+        for r in b.rooms:
+            for d in b.doors_of[r.id]:
+                counts[r.label][_target(b, r.id, d)] += 1
+    out = {}
+    for lab, c in counts.items():
+        total = sum(c.values())
+        if total:
+            out[lab] = {k: v / total for k, v in sorted(c.items())}
+    return out
+
+
+def _functions(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
+    from realistic_indoor.validator.connectivity import normalise_function
+
+    counts: dict[SemanticLabel, Counter] = {lab: Counter() for lab in SemanticLabel}
+    for b in plans:
+        for r in b.rooms:
+            counts[r.label][normalise_function(r.function)] += 1
+    out = {}
+    for lab, c in counts.items():
+        total = sum(c.values())
+        if total:
+            out[lab] = {k: v / total for k, v in sorted(c.items())}
+    return out
+
+
+def _structures(plans: list[Building]) -> LocalStructures:
+    """How often each recurring local structure occurs (see :class:`LocalStructures`)."""
+    default = LocalStructures()
+    closets = medium_big = paired = small = clustered = halls = junction = 0
+    for b in plans:
+        labels = {r.id: r.label for r in b.rooms}
+        for r in b.rooms:
+            targets = [labels.get(d.other(r.id)) for d in b.doors_of[r.id]]
+            if r.label in (SemanticLabel.MEDIUM, SemanticLabel.BIG):
+                medium_big += 1
+                paired += any(t in (SemanticLabel.MEDIUM, SemanticLabel.BIG) for t in targets)
+            elif r.label is S:
+                small += 1
+                closets += bool(targets) and all(t in ROOM_LABELS for t in targets)
+                clustered += _in_cluster(b, r.id, labels)
+            elif r.label is H:
+                halls += 1
+                junction += sum(t is C for t in targets) >= 3
+    return LocalStructures(
+        closets_per_room=closets / medium_big if medium_big else default.closets_per_room,
+        connected_room_pairs=paired / medium_big if medium_big else default.connected_room_pairs,
+        clustered_small_rooms=clustered / small if small else default.clustered_small_rooms,
+        junction_halls=junction / halls if halls else default.junction_halls,
+    )
+
+
+def _in_cluster(b: Building, rid: str, labels: dict[str, SemanticLabel]) -> bool:
+    """Whether a small room opens onto a corridor or hall that two other small rooms open onto."""
+    for d in b.doors_of[rid]:
+        hub = d.other(rid)
+        if hub is None or labels.get(hub) not in (C, H):
+            continue
+        others = {d2.other(hub) for d2 in b.doors_of[hub]} - {rid, None}
+        if sum(labels.get(o) is S for o in others) >= 2:
+            return True
+    return False

@@ -1,0 +1,83 @@
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from realistic_indoor.building import ROOM_LABELS, SemanticLabel, check_building
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.generator import generate, make_generator
+from realistic_indoor.models import BuildingTypeModel, fit_model
+from realistic_indoor.validator.tables import label_table
+
+
+@pytest.fixture(scope="module")
+def offices():
+    return [generate("office", 1500, seed=s) for s in range(12)]
+
+
+def test_fit_model__recovers_the_shares_and_doors_of_its_plans(offices):
+    model, table = fit_model(offices), label_table(offices)
+    assert model.name == "office"
+    for lab in SemanticLabel:
+        assert model.labels[lab].share * 100 == pytest.approx(table[lab]["share_pct"])
+        assert model.labels[lab].doors_mean == pytest.approx(table[lab]["doors_mean"])
+        assert model.labels[lab].area_mean == pytest.approx(table[lab]["area_mean"])
+
+
+def test_fit_model__connections_count_every_doorway(offices):
+    model = fit_model(offices)
+    doors_to = {
+        lab: sum(1 for b in offices for r in b.rooms if r.label is lab for _ in b.doors_of[r.id])
+        for lab in SemanticLabel
+    }
+    hall_to_outside = sum(
+        1 for b in offices for d in b.entrances if b.room(d.room_a).label is SemanticLabel.HALL
+    )
+    assert model.connection(SemanticLabel.HALL, "outside") == pytest.approx(
+        hall_to_outside / doors_to[SemanticLabel.HALL]
+    )
+
+
+def test_fit_model__functions_and_structures_come_from_the_plans(offices):
+    model = fit_model(offices)
+    assert "office" in model.functions[SemanticLabel.MEDIUM]
+    assert "corridor" in model.functions[SemanticLabel.CORRIDOR]
+    assert 0.0 < model.structures.clustered_small_rooms <= 1.0
+    assert 0.0 <= model.structures.connected_room_pairs < 0.3
+
+
+def test_fit_model__names_mixed_sets_unknown_and_takes_a_name():
+    mixed = [generate("office", 800, seed=1), generate("house", 150, seed=1)]
+    assert fit_model(mixed).name == "unknown"
+    assert fit_model(mixed, name="hospital").name == "hospital"
+
+
+def test_fit_model__without_rooms_is_a_config_error():
+    with pytest.raises(ConfigError, match="without rooms"):
+        fit_model([])
+
+
+def test_fit_model__a_new_type_gets_a_generator(offices):
+    model = fit_model(offices, name="hospital")
+    b = make_generator("hospital", 1200, model=model)(np.random.default_rng(0))
+    assert b.building_type.value == "unknown"
+    assert b.metadata["params"]["model"] == "hospital"
+    assert check_building(b) == []
+
+
+@pytest.mark.parametrize("kind", ["office", "school"])
+def test_fit_model__on_the_real_plans_gives_a_generator_of_their_statistics(kind, real_plans_dir: Path):
+    from realistic_indoor.io import load
+
+    plans = [load(p) for p in sorted((real_plans_dir / kind).glob("*.xml"))]
+    model = fit_model(plans)
+    assert isinstance(model, BuildingTypeModel)
+    assert model.name == kind
+    gen = make_generator(kind, model=model)
+    built = [gen(np.random.default_rng(s)) for s in range(40)]
+    assert all(check_building(b) == [] for b in built)
+    table = label_table(built)
+    for lab in SemanticLabel:
+        assert table[lab]["share_pct"] == pytest.approx(100 * model.labels[lab].share, abs=8.0), lab
+    for lab in ROOM_LABELS:
+        assert table[lab]["doors_mean"] == pytest.approx(model.labels[lab].doors_mean, abs=0.3), lab

@@ -21,6 +21,7 @@ from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, GENERATOR_NAMES, Generator
 from realistic_indoor.generator.house import HouseGenerator
 from realistic_indoor.generator.random_grid import RandomGridGenerator
+from realistic_indoor.generator.regenerate import regenerate
 from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
 
 if TYPE_CHECKING:
@@ -36,6 +37,7 @@ __all__ = [
     "SchoolGenerator",
     "generate",
     "make_generator",
+    "regenerate",
 ]
 
 

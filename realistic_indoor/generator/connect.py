@@ -27,10 +27,18 @@ __all__ = ["break_mazes", "connect_circulation", "connect_rooms", "ensure_reacha
 C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
 
 
-def connect_circulation(plan: Plan, skip: set[tuple[int, int]] | None = None) -> None:
-    """Open every pair of touching corridors and halls into each other (except pairs in ``skip``)."""
+def connect_circulation(plan: Plan, only: set[int] | None = None) -> None:
+    """Open every pair of touching corridors and halls into each other.
+
+    Args:
+        plan: The plan.
+        only: If given, just the pairs with a room in this set that no door joins yet.
+    """
+    joined = {frozenset((d.a, d.b)) for d in plan.doors} if only is not None else set()
     for i, j in sorted(plan.contacts()):
-        if plan.rooms[i].is_circulation and plan.rooms[j].is_circulation and (i, j) not in (skip or set()):
+        if not (plan.rooms[i].is_circulation and plan.rooms[j].is_circulation):
+            continue
+        if only is None or ((i in only or j in only) and frozenset((i, j)) not in joined):
             open_between(plan, i, j)
 
 
@@ -40,7 +48,9 @@ def _door_to(plan: Plan, i: int, j: int, rng: np.random.Generator, width: int, w
     return any(add_door(plan, i, j, w, width, rng, where=where) for w in walls)
 
 
-def connect_rooms(plan: Plan, model: BuildingTypeModel, rng: np.random.Generator, pairs: float) -> None:
+def connect_rooms(
+    plan: Plan, model: BuildingTypeModel, rng: np.random.Generator, pairs: float, only: set[int] | None = None
+) -> None:
     """Doors of every room that is not a corridor or hall.
 
     Args:
@@ -48,18 +58,20 @@ def connect_rooms(plan: Plan, model: BuildingTypeModel, rng: np.random.Generator
         model: Connection frequencies and mean door counts per label.
         rng: Random source.
         pairs: Share of medium and big rooms to give a connecting door to a neighbour.
+        only: If given, just these rooms get doors (the others keep theirs).
     """
+    chosen = set(range(len(plan.rooms))) if only is None else only
     neighbours = plan.neighbours()
     options = [_circulation_options(plan, i, neighbours[i]) for i in range(len(plan.rooms))]
-    p_hall = _hall_preference(plan, options, model)
+    p_hall = _hall_preference(plan, options, model, chosen)
     for i, room in enumerate(plan.rooms):
-        if room.is_circulation:
+        if room.is_circulation or i not in chosen:
             continue
         if room.host >= 0 and _door_to(plan, i, room.host, rng, RULES.room):
             continue
         _primary_door(plan, i, options[i], p_hall[room.label], rng)
-    _connecting_doors(plan, neighbours, rng, pairs)
-    _extra_doors(plan, neighbours, model, rng)
+    _connecting_doors(plan, neighbours, rng, pairs, chosen)
+    _extra_doors(plan, neighbours, model, rng, chosen)
 
 
 def _circulation_options(plan: Plan, i: int, near: list[int]) -> dict[SemanticLabel, list[int]]:
@@ -75,7 +87,7 @@ def _circulation_options(plan: Plan, i: int, near: list[int]) -> dict[SemanticLa
 
 
 def _hall_preference(
-    plan: Plan, options: list[dict[SemanticLabel, list[int]]], model: BuildingTypeModel
+    plan: Plan, options: list[dict[SemanticLabel, list[int]]], model: BuildingTypeModel, chosen: set[int]
 ) -> dict[SemanticLabel, float]:
     """Probability that a room beside both a corridor and a hall opens onto the hall.
 
@@ -84,7 +96,7 @@ def _hall_preference(
     """
     out = {}
     for label in ROOM_LABELS:
-        rooms = [k for k, r in enumerate(plan.rooms) if r.label is label and r.host < 0]
+        rooms = [k for k, r in enumerate(plan.rooms) if r.label is label and r.host < 0 and k in chosen]
         beside = sum(1 for k in rooms if options[k][H])
         to_c, to_h = model.connection(label, C.value), model.connection(label, H.value)
         wanted = to_h / (to_c + to_h) if to_c + to_h > 0 else 0.0
@@ -107,10 +119,14 @@ def _primary_door(
 
 
 def _connecting_doors(
-    plan: Plan, neighbours: list[list[int]], rng: np.random.Generator, share: float
+    plan: Plan, neighbours: list[list[int]], rng: np.random.Generator, share: float, chosen: set[int]
 ) -> None:
     """Connecting doors between neighbouring medium/big rooms that each have a door of their own."""
-    big = [i for i, r in enumerate(plan.rooms) if r.label in (SemanticLabel.MEDIUM, SemanticLabel.BIG)]
+    big = [
+        i
+        for i, r in enumerate(plan.rooms)
+        if r.label in (SemanticLabel.MEDIUM, SemanticLabel.BIG) and i in chosen
+    ]
     if not big:
         return
     used: set[int] = set()
@@ -130,15 +146,19 @@ def _connecting_doors(
 
 
 def _extra_doors(
-    plan: Plan, neighbours: list[list[int]], model: BuildingTypeModel, rng: np.random.Generator
+    plan: Plan,
+    neighbours: list[list[int]],
+    model: BuildingTypeModel,
+    rng: np.random.Generator,
+    chosen: set[int],
 ) -> None:
     """Second doors (to circulation or outside) until each label's mean door count is the model's."""
     counts = plan.door_count()
     for label in ROOM_LABELS:
-        rooms = [i for i, r in enumerate(plan.rooms) if r.label is label and r.role == "room"]
+        rooms = [i for i, r in enumerate(plan.rooms) if r.label is label and r.role == "room" and i in chosen]
         if not rooms:
             continue
-        everyone = [i for i, r in enumerate(plan.rooms) if r.label is label]
+        everyone = [i for i, r in enumerate(plan.rooms) if r.label is label and i in chosen]
         deficit = model.stats(label).doors_mean * len(everyone) - sum(counts[i] for i in everyone)
         rooms.sort(key=lambda i: -plan.rooms[i].area - rng.random())
         p_out = model.connection(label, OUTSIDE)

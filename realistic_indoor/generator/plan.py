@@ -13,7 +13,7 @@ from typing import Any
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
 from realistic_indoor.generator.geometry import Contact, Rect, contacts_by_pair, outline, to_metres
 
-__all__ = ["CIRCULATION", "Plan", "PlanDoor", "PlanRoom"]
+__all__ = ["CIRCULATION", "Plan", "PlanDoor", "PlanRoom", "build_door"]
 
 CIRCULATION = (SemanticLabel.CORRIDOR, SemanticLabel.HALL)
 """Labels of the spaces people walk through to reach rooms."""
@@ -149,7 +149,8 @@ class Plan:
         """Which rooms can be reached through doors from the first exterior door (the main entrance).
 
         Rooms behind another exterior door but cut off from the main entrance count as
-        unreachable, so that the building comes out in one piece.
+        unreachable, so that the building comes out in one piece. Rooms without rectangles (taken
+        out of the plan) count as reached.
         """
         adj: list[list[int]] = [[] for _ in self.rooms]
         frontier = []
@@ -159,7 +160,7 @@ class Plan:
             else:
                 adj[d.a].append(d.b)
                 adj[d.b].append(d.a)
-        seen = [False] * len(self.rooms)
+        seen = [not r.rects for r in self.rooms]
         for s in frontier:
             seen[s] = True
         while frontier:
@@ -207,11 +208,12 @@ class Plan:
             )
             for i, r in enumerate(self.rooms)
         )
-        doors = tuple(_door(f"d{k}", d, ids) for k, d in enumerate(self.doors))
+        doors = tuple(build_door(f"d{k}", d, ids) for k, d in enumerate(self.doors))
         return Building(building_type, rooms, doors, metadata)
 
 
-def _door(door_id: str, d: PlanDoor, ids: list[str]) -> Door:
+def build_door(door_id: str, d: PlanDoor, ids: list[str]) -> Door:
+    """The ``Door`` (metres) of a plan door, rooms named by ``ids``."""
     along = to_metres(d.centre2 / 2)
     fixed = to_metres(d.coord)
     x, y = (fixed, along) if d.axis == "v" else (along, fixed)

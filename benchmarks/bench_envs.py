@@ -9,8 +9,9 @@ Measures, in one process with random actions:
 2. how these grow with the building's area: ``OfficeExplore-v0`` with ``area_m2`` from 250 to
    4,000 m2 (or, with ``--source plans``, fixed real plans of growing size).
 
-Memory per environment is the growth of the process's resident memory when eight environments
-are made and reset (Linux ``/proc``), and the bytes held by the world's and map's arrays.
+Memory per environment is what eight environments allocate when made, reset and stepped
+(``tracemalloc``), divided by eight; "world + map" is the part held by the world's and the
+robot map's arrays.
 
 Usage::
 
@@ -23,6 +24,7 @@ from __future__ import annotations
 import argparse
 import gc
 import time
+import tracemalloc
 from pathlib import Path
 
 import gymnasium as gym
@@ -78,16 +80,16 @@ def _table(title: str, key: str, rows: list[tuple[str, str, dict]], args: argpar
     print(f"## {title}\n")
     print(
         f"| {key} | area m2 | steps/s | steps/s incl. resets | reset ms | world build ms "
-        "| world + map MB | RSS per env MB |"
+        "| world + map MB | memory per env MB |"
     )
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for label, env_id, kwargs in rows:
         rate, rate_all = _step_rates(env_id, kwargs, args)
         reset_ms, build_ms, area, nbytes = _reset_cost(env_id, kwargs, args)
-        rss = _rss_per_env(env_id, kwargs, args.seed)
+        memory = _memory_per_env(env_id, kwargs, args.seed)
         print(
             f"| {label} | {area:,.0f} | {rate:,.0f} | {rate_all:,.0f} | {reset_ms:.1f} | {build_ms:.1f} "
-            f"| {nbytes / 1e6:.1f} | {rss:.1f} |"
+            f"| {nbytes / 1e6:.1f} | {memory:.1f} |"
         )
     print()
 
@@ -138,23 +140,21 @@ def _reset_cost(env_id: str, kwargs: dict, args: argparse.Namespace) -> tuple[fl
     return reset_ms, build_ms, sum(areas) / len(areas), nbytes
 
 
-def _rss_bytes() -> int:
-    with open("/proc/self/statm") as f:
-        return int(f.read().split()[1]) * 4096
+def _memory_per_env(env_id: str, kwargs: dict, seed: int) -> float:
+    """Memory allocated per environment made, reset and stepped once (MB).
 
-
-def _rss_per_env(env_id: str, kwargs: dict, seed: int) -> float:
-    """Growth of resident memory per environment made and reset (MB), ``nan`` off Linux."""
-    try:
-        gc.collect()
-        before = _rss_bytes()
-    except OSError:
-        return float("nan")
+    Counted with ``tracemalloc``, which sees Python objects and NumPy arrays (not pymunk's
+    C structures, a few hundred bytes per wall segment).
+    """
+    gc.collect()
+    tracemalloc.start()
+    before = tracemalloc.get_traced_memory()[0]
     envs = [gym.make(env_id, **kwargs) for _ in range(MEMORY_ENVS)]
     for i, env in enumerate(envs):
         env.reset(seed=seed + i)
         env.step(env.action_space.sample())
-    grown = _rss_bytes() - before
+    grown = tracemalloc.get_traced_memory()[0] - before
+    tracemalloc.stop()
     for env in envs:
         env.close()
     return grown / MEMORY_ENVS / 1e6

@@ -171,3 +171,15 @@ def test_cli__convert_a_real_plan_to_json_keeps_it(real_plans_dir, tmp_path):
 def test_cli__infer_entrances_needs_a_floorplan_input(plan_json, tmp_path, capsys):
     assert main(["render", str(plan_json), "-o", str(tmp_path / "p.png"), "--infer-entrances"]) == 1
     _one_line_error(capsys.readouterr().err, str(plan_json), "floor-plan XML")
+
+
+def test_convert__infer_entrances_on_json_is_a_one_line_error(tmp_path, tiny_office, capsys):
+    from realistic_indoor.cli import main
+    from realistic_indoor.io import save
+
+    plan = tmp_path / "plan.json"
+    save(tiny_office, plan)
+    assert main(["convert", str(plan), "-o", str(tmp_path / "out.json"), "--infer-entrances"]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1
+    assert "floor-plan XML" in err[0]

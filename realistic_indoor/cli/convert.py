@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 
+from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``convert`` subcommand."""
@@ -20,19 +22,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--resolution", type=float, default=0.05, help="ROS map resolution, metres per pixel (default 0.05)"
     )
-    p.add_argument(
-        "--infer-entrances",
-        action="store_true",
-        help="floor-plan XML input: add an exterior door to entrance spaces (real plans have none)",
-    )
+    add_infer_entrances(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Read, write, and report the files written."""
-    from realistic_indoor.io import format_of, load, save
+    from realistic_indoor.io import format_of, save
 
-    b = load(args.plan, **({"infer_entrances": True} if args.infer_entrances else {}))
+    b = load_plan(args)
     options = {"resolution_m": args.resolution} if format_of(args.output) == "ros" else {}
     for path in save(b, args.output, **options):
         print(f"wrote {path}")

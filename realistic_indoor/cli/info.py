@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 
+from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``info`` subcommand."""
@@ -15,14 +17,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("plan", help="plan file (.json, floor-plan .xml, World Generator .wg.xml)")
     p.add_argument("--check", action="store_true", help="also list violated invariants")
+    add_infer_entrances(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Print the summary; exit code 1 if ``--check`` found problems."""
-    from realistic_indoor.io import load
-
-    b = load(args.plan)
+    b = load_plan(args)
     print(f"plan: {args.plan}")
     print(b.summary())
     if args.check:

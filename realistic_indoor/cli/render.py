@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 
+from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``render`` subcommand."""
@@ -33,29 +35,20 @@ def register(sub: argparse._SubParsersAction) -> None:
     title.add_argument("--title", help="title text (default: plan name, type, room and door counts, area)")
     title.add_argument("--no-title", action="store_true", help="no title")
     p.add_argument("--no-legend", action="store_true", help="leave out the legend")
-    p.add_argument(
-        "--infer-entrances",
-        action="store_true",
-        help="floor-plan XML input: add exterior doors where the plan's entrances are (real plans have none)",
-    )
+    add_infer_entrances(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Read the plan, draw it, and report the file written."""
     from realistic_indoor.errors import ConfigError
-    from realistic_indoor.io import format_of, load, save
+    from realistic_indoor.io import format_of, save
 
     if format_of(args.output) not in ("png", "svg"):
         raise ConfigError(
             f"{args.output}: render writes .png or .svg pictures (use convert for other formats)"
         )
-    options = {}
-    if args.infer_entrances:
-        if format_of(args.plan) != "floorplan":
-            raise ConfigError(f"{args.plan}: --infer-entrances applies to floor-plan XML plans only")
-        options["infer_entrances"] = True
-    b = load(args.plan, **options)
+    b = load_plan(args)
     written = save(
         b,
         args.output,

@@ -36,6 +36,7 @@ __all__ = [
     "RandomGridGenerator",
     "SchoolGenerator",
     "generate",
+    "generate_from",
     "make_generator",
     "regenerate",
 ]
@@ -103,10 +104,22 @@ def generate(name: str, area_m2: float | None = None, seed: int | None = None, *
         >>> b.metadata["generator"], b.metadata["seed"]
         ('office', 3)
     """
-    gen = make_generator(name, area_m2, **options)
+    return generate_from(make_generator(name, area_m2, **options), seed)
+
+
+def generate_from(generator: Generator, seed: int | None = None) -> Building:
+    """Draw one building from ``generator`` with a seed, and record the seed in its metadata.
+
+    Args:
+        generator: Any generator (see :class:`Generator`).
+        seed: Seed of the random generator; ``None`` draws a fresh one.
+
+    Raises:
+        ConfigError: If the seed is not a non-negative integer.
+    """
     if seed is None:
         seed = int(np.random.default_rng().integers(2**31))
     elif not isinstance(seed, (int, np.integer)) or isinstance(seed, bool) or seed < 0:
         raise ConfigError(f"seed must be a non-negative integer, not {seed!r}")
-    b = gen(np.random.default_rng(int(seed)))
+    b = generator(np.random.default_rng(int(seed)))
     return replace(b, metadata={**b.metadata, "seed": int(seed)})

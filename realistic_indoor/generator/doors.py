@@ -11,7 +11,7 @@ from realistic_indoor.generator.plan import Plan, PlanDoor
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["DoorRules", "add_door", "door_fits", "exterior_walls", "open_between"]
+__all__ = ["DoorRules", "add_door", "add_exterior_door", "door_fits", "exterior_walls", "open_between"]
 
 
 @dataclass(frozen=True)
@@ -53,8 +53,8 @@ def door_fits(c: Contact, width: int, rules: DoorRules = RULES) -> bool:
 def _free_spans(plan: Plan, c: Contact, rules: DoorRules, margin: int) -> list[tuple[int, int]]:
     lo, hi = c.lo + margin, c.hi - margin
     taken = []
-    for d in plan.doors:
-        if d.axis == c.axis and d.coord == c.coord and c.lo < d.centre2 / 2 < c.hi:
+    for d in plan.doors_on(c.axis, c.coord):
+        if c.lo < d.centre2 / 2 < c.hi:
             half = d.width / 2 + rules.spacing
             taken.append((int(d.centre2 / 2 - half), int(d.centre2 / 2 + half + 1)))
     return subtract_intervals(lo, hi, taken) if taken else ([(lo, hi)] if hi > lo else [])
@@ -136,14 +136,46 @@ def open_between(
     return add_door(plan, a, b, best, width, where="centre", rules=rules, margin=rules.open_margin)
 
 
+def add_exterior_door(
+    plan: Plan,
+    i: int,
+    width: int,
+    *,
+    axis: str | None = None,
+    rules: DoorRules = RULES,
+    margin: int | None = None,
+) -> bool:
+    """Put a door from room ``i`` to the outside on its longest facade that takes one.
+
+    The door is ``width`` wide, or narrower down to a room door's width where the facade is
+    short; facades that cannot hold a room door are passed over.
+
+    Args:
+        plan: The plan.
+        i: The room.
+        width: Width wanted (units).
+        axis: Only facades along this axis (``"v"`` or ``"h"``), e.g. the end of a corridor.
+        rules: Widths and clearances.
+        margin: Clearance at the facade's ends (default ``rules.margin``).
+
+    Returns:
+        Whether a door was placed.
+    """
+    margin = rules.margin if margin is None else margin
+    for w in exterior_walls(plan, i):
+        fits = min(width, w.length - 2 * margin)
+        usable = (axis is None or w.axis == axis) and fits >= min(width, rules.room)
+        if usable and add_door(plan, i, None, w, fits, where="centre", rules=rules, margin=margin):
+            return True
+    return False
+
+
 def exterior_walls(plan: Plan, i: int) -> list[Contact]:
     """Pieces of room ``i``'s outline that face the outside (not a courtyard), longest first."""
     rects = plan.rooms[i].rects
     covered: dict[tuple[str, int], list[tuple[int, int]]] = {}
-    for (p, q), walls in plan.contacts().items():
-        if i in (p, q):
-            for w in walls:
-                covered.setdefault((w.axis, w.coord), []).append((w.lo, w.hi))
+    for w in plan.walls_of(i):
+        covered.setdefault((w.axis, w.coord), []).append((w.lo, w.hi))
     for k, r in enumerate(rects):
         for s in rects[k + 1 :]:
             w = contact(r, s)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
@@ -42,31 +43,26 @@ def draw_function(
     return names[int(rng.choice(len(names), p=[x / sum(w) for x in w]))]
 
 
+@dataclass(frozen=True)
 class FunctionRoles:
     """Which functions suit which roles, for one building type.
 
-    Args:
+    Attributes:
         service: Functions of rooms in service cores.
         storage: Functions of closets and rooms entered through other rooms.
         ends: Functions of small rooms at corridor ends.
         entrance: Functions of the entrance hall.
         core: The type's core functions (offices, classrooms, bedrooms): rooms without a door
-            to a corridor rarely get them.
+            to a corridor rarely get them (default: the validator's core functions of the type).
+        grouped: Functions that come only in groups, inside service cores (toilets).
     """
 
-    def __init__(
-        self,
-        service: Iterable[str],
-        storage: Iterable[str],
-        ends: Iterable[str],
-        entrance: Iterable[str],
-        core: Iterable[str],
-    ) -> None:
-        self.service = tuple(service)
-        self.storage = tuple(storage)
-        self.ends = tuple(ends)
-        self.entrance = tuple(entrance)
-        self.core = tuple(core)
+    service: tuple[str, ...] = ()
+    storage: tuple[str, ...] = ("closet", "storage")
+    ends: tuple[str, ...] = ()
+    entrance: tuple[str, ...] = ()
+    core: tuple[str, ...] = ()
+    grouped: tuple[str, ...] = ("toilet", "washroom")
 
 
 def _core_functions(model: BuildingTypeModel) -> tuple[str, ...]:
@@ -97,14 +93,15 @@ def assign_functions(
         if r.role in ("closet", "back") and r.label is SemanticLabel.SMALL:
             r.function = draw_function(rng, weights, roles.storage)
         elif r.role == "end":
-            r.function = draw_function(rng, weights, roles.ends)
+            r.function = draw_function(rng, weights, roles.ends, avoid=roles.grouped)
         elif r.role == "lobby":
             r.function = draw_function(rng, weights, roles.entrance)
         elif r.role == "hall":
             r.function = draw_function(rng, weights, avoid=roles.entrance)
         else:
             to_corridor = any(j is not None and plan.rooms[j].label is C for j in partners[i])
-            r.function = draw_function(rng, weights, avoid=() if to_corridor else core)
+            avoid = roles.grouped + (() if to_corridor else core)
+            r.function = draw_function(rng, weights, avoid=avoid)
 
 
 def _service_core(

@@ -17,7 +17,7 @@ from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.errors import RealisticIndoorError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
 from realistic_indoor.generator.connect import break_mazes, connect_circulation, ensure_reachable
-from realistic_indoor.generator.doors import RULES, add_door, door_fits, exterior_walls
+from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door, door_fits, exterior_walls
 from realistic_indoor.generator.functions import draw_function
 from realistic_indoor.generator.geometry import Rect, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
@@ -353,7 +353,7 @@ def _doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel) -> No
     """Front door, hallway openings, kitchen to living room, room doors, en-suite bathrooms."""
     lobby = next(i for i, r in enumerate(plan.rooms) if r.role == "lobby")
     order = [lobby] + [i for i, r in enumerate(plan.rooms) if r.role in ("hall", "living", "kitchen")]
-    if not any(_front_door(plan, i) for i in order):
+    if not any(add_exterior_door(plan, i, RULES.exit) for i in order):
         raise RealisticIndoorError(
             "house layout without a wall for the front door (a bug: please report the seed)"
         )
@@ -384,14 +384,6 @@ def _doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel) -> No
             _door(plan, rng, i, centre)
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
-
-
-def _front_door(plan: Plan, i: int) -> bool:
-    for w in exterior_walls(plan, i):
-        width = min(RULES.exit, w.length - 2 * RULES.margin)
-        if width >= RULES.room and add_door(plan, i, None, w, width, where="centre"):
-            return True
-    return False
 
 
 def _door(plan: Plan, rng: np.random.Generator, i: int, j: int) -> bool:

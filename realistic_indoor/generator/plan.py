@@ -97,6 +97,10 @@ class Plan:
     doors: list[PlanDoor] = field(default_factory=list)
     exterior_holes: list[Rect] = field(default_factory=list)
     _contacts: dict[tuple[int, int], list[Contact]] | None = field(default=None, repr=False)
+    _walls: dict[int, list[Contact]] = field(default_factory=dict, repr=False)
+    _door_index: tuple[int, int, dict[tuple[str, int], list[PlanDoor]]] | None = field(
+        default=None, repr=False
+    )
 
     def add(self, room: PlanRoom) -> int:
         """Append a room and return its index."""
@@ -113,7 +117,34 @@ class Plan:
         """Shared wall pieces between every pair of touching rooms, keyed ``(i, j)`` with ``i < j``."""
         if self._contacts is None:
             self._contacts = contacts_by_pair([r.rects for r in self.rooms])
+            self._walls = {}
+            for (i, j), walls in self._contacts.items():
+                self._walls.setdefault(i, []).extend(walls)
+                self._walls.setdefault(j, []).extend(walls)
         return self._contacts
+
+    def walls_of(self, i: int) -> list[Contact]:
+        """Every wall piece room ``i`` shares with another room."""
+        self.contacts()
+        return self._walls.get(i, [])
+
+    def doors_on(self, axis: str, coord: int) -> list[PlanDoor]:
+        """The doors on the wall line ``axis``/``coord``.
+
+        The index catches up with doors appended since the last call, and is rebuilt if the
+        door list was replaced or shortened.
+        """
+        if (
+            self._door_index is None
+            or self._door_index[0] != id(self.doors)
+            or self._door_index[1] > len(self.doors)
+        ):
+            self._door_index = (id(self.doors), 0, {})
+        _, seen, index = self._door_index
+        for d in self.doors[seen:]:
+            index.setdefault((d.axis, d.coord), []).append(d)
+        self._door_index = (id(self.doors), len(self.doors), index)
+        return index.get((axis, coord), [])
 
     def shared(self, i: int, j: int) -> list[Contact]:
         """Wall pieces rooms ``i`` and ``j`` share (empty if they do not touch)."""

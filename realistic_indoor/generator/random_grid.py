@@ -21,7 +21,7 @@ from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import finish
 from realistic_indoor.generator.connect import connect_circulation, ensure_reachable
-from realistic_indoor.generator.doors import RULES, add_door, exterior_walls
+from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door
 from realistic_indoor.generator.functions import draw_function
 from realistic_indoor.generator.geometry import Contact, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
@@ -189,10 +189,7 @@ def _doors(plan: Plan, rng: np.random.Generator) -> None:
                 add_door(plan, i, j, w, RULES.room, where="centre")
     ring = [i for i, r in enumerate(plan.rooms) if r.is_circulation]
     for k in rng.permutation(len(ring)):
-        walls = exterior_walls(plan, ring[int(k)])
-        if walls and add_door(
-            plan, ring[int(k)], None, walls[0], RULES.exit, where="centre", margin=RULES.open_margin
-        ):
+        if add_exterior_door(plan, ring[int(k)], RULES.exit, margin=RULES.open_margin):
             break
     ensure_reachable(plan, rng)
 

@@ -17,7 +17,7 @@ from realistic_indoor.generator.connect import (
     connect_rooms,
     ensure_reachable,
 )
-from realistic_indoor.generator.doors import RULES, add_door, exterior_walls
+from realistic_indoor.generator.doors import RULES, add_exterior_door
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
 from realistic_indoor.generator.geometry import UNITS_PER_M, Rect, contact, outline, to_metres
 from realistic_indoor.generator.plan import Plan, PlanDoor, PlanRoom, build_door
@@ -324,10 +324,7 @@ def _reconnect(
     for i in sorted(circulation, key=lambda k: -plan.rooms[k].area):
         if lost <= 0:
             break
-        for w in exterior_walls(plan, i):
-            if add_door(plan, i, None, w, min(RULES.exit, w.length - 2 * RULES.margin), where="centre"):
-                lost -= 1
-                break
+        lost -= add_exterior_door(plan, i, RULES.exit)
     if not any(d.b is None for d in plan.doors):
         raise ConfigError("the regenerated portion held the only entrance and has no facade to put one on")
     connect_rooms(
@@ -335,7 +332,7 @@ def _reconnect(
     )
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
-    assign_functions(plan, model, rng, FunctionRoles((), ("closet", "storage"), (), (), ()))
+    assign_functions(plan, model, rng, FunctionRoles())
 
 
 def _rebuild(

@@ -12,7 +12,7 @@ from realistic_indoor.generator.connect import (
     connect_rooms,
     ensure_reachable,
 )
-from realistic_indoor.generator.doors import RULES, add_door, exterior_walls
+from realistic_indoor.generator.doors import RULES, add_exterior_door, exterior_walls
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
 from realistic_indoor.generator.geometry import Rect, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
@@ -78,13 +78,15 @@ def _skeleton(
     """A sized skeleton whose wings are of a plausible length and whose footprint is not too long.
 
     Draws up to a dozen shapes and keeps the first that fits, else the one that came closest.
+    The longest side may be 2.6 times the side of a square of the same area (at least the
+    style's ``max_extent_m``).
     """
     n_rooms = area_m2 / model.mean_room_area()
     across = (1.3 * dims.depth + dims.corridor) / 10
     lo, hi = style.wing_length_m
-    max_extent = to_units(max(style.max_extent_m, 2.2 * math.sqrt(area_m2)))
+    max_extent = to_units(max(style.max_extent_m, 2.6 * math.sqrt(area_m2)))
     best, best_cost = None, math.inf
-    for _ in range(16):
+    for _ in range(12):
         n_edges = max(1, round(area_m2 / across / rng.uniform(lo, hi)))
         sk = sample_shape(rng, n_edges, style.shapes)
         n_halls = int(model.shares()[H] * n_rooms + rng.random())
@@ -198,7 +200,10 @@ def wing_plan(
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
     roles = FunctionRoles(
-        style.service_functions, style.storage_functions, style.end_functions, style.entrance_functions, ()
+        service=style.service_functions,
+        storage=style.storage_functions,
+        ends=style.end_functions,
+        entrance=style.entrance_functions,
     )
     assign_functions(plan, model, rng, roles)
     _require(plan, style.required_functions)
@@ -286,30 +291,13 @@ def _entrances(
     for i, r in enumerate(plan.rooms):
         if r.role not in ("lobby", "hall") or (i != lobby and rng.random() >= p_side):
             continue
-        width = RULES.entrance if i == lobby else RULES.exit
-        for w in exterior_walls(plan, i):
-            if add_door(plan, i, None, w, min(width, w.length - 2 * RULES.margin), where="centre"):
-                placed = True
-                break
+        placed |= add_exterior_door(plan, i, RULES.entrance if i == lobby else RULES.exit)
     for i, r in enumerate(plan.rooms):
-        if r.role != "corridor":
+        if r.role != "corridor" or (placed and rng.random() >= style.exit_p):
             continue
         x0, y0, x1, y1 = r.rects[0]
         across = "v" if (x1 - x0) >= (y1 - y0) else "h"
-        for w in exterior_walls(plan, i):
-            if w.axis == across and (not placed or rng.random() < style.exit_p):
-                width = min(RULES.exit, w.length - 2 * RULES.open_margin)
-                if width >= to_units(0.8) and add_door(
-                    plan, i, None, w, width, where="centre", margin=RULES.open_margin
-                ):
-                    placed = True
+        placed |= add_exterior_door(plan, i, RULES.exit, axis=across, margin=RULES.open_margin)
     if not placed:
-        _any_entrance(plan, annex)
-
-
-def _any_entrance(plan: Plan, annex: int) -> None:
-    order = sorted(range(len(plan.rooms)), key=lambda i: (not plan.rooms[i].is_circulation, i == annex))
-    for i in order:
-        for w in exterior_walls(plan, i):
-            if add_door(plan, i, None, w, RULES.room, where="centre"):
-                return
+        order = sorted(range(len(plan.rooms)), key=lambda i: (not plan.rooms[i].is_circulation, i == annex))
+        any(add_exterior_door(plan, i, RULES.room) for i in order)

@@ -172,37 +172,36 @@ def _junction(sk: Skeleton, X: _Bands, Y: _Bands, grid: dict[Cell, Tag], node: t
     """Give the non-corridor cells of a junction block to the bays around it (see module doc)."""
     i, j = node
     dirs = sk.dirs(node)
-
-    def cell(dx: int, dy: int) -> Cell:
-        return (X("LCR"[dx + 1], i), Y("LCR"[dy + 1], j))
+    xs = (X.index[("L", i)], X.index[("C", i)], X.index[("R", i)])
+    ys = (Y.index[("L", j)], Y.index[("C", j)], Y.index[("R", j)])
 
     def is_corridor(c: Cell) -> bool:
         return grid.get(c, ("",))[0] == "cor"
 
-    for dy, kind in ((1, "HT"), (-1, "HB")):
-        west, mid, east = cell(-1, dy), cell(0, dy), cell(1, dy)
+    for dy, kind in ((2, "HT"), (0, "HB")):
+        west, mid, east = (xs[0], ys[dy]), (xs[1], ys[dy]), (xs[2], ys[dy])
         tag = ("bay", kind, j)
         if is_corridor(mid):
             if "W" in dirs:
                 grid.setdefault(west, tag)
             if "E" in dirs:
                 grid.setdefault(east, tag)
-        elif dirs & {"W", "E"}:
+        elif "W" in dirs or "E" in dirs:
             for c in (west, mid, east):
                 grid.setdefault(c, tag)
-    for dx, kind in ((-1, "VL"), (1, "VR")):
-        south, mid, north = cell(dx, -1), cell(dx, 0), cell(dx, 1)
+    for dx, kind in ((0, "VL"), (2, "VR")):
+        south, mid, north = (xs[dx], ys[0]), (xs[dx], ys[1]), (xs[dx], ys[2])
         tag = ("bay", kind, i)
         if is_corridor(mid):
             if "S" in dirs:
                 grid.setdefault(south, tag)
             if "N" in dirs:
                 grid.setdefault(north, tag)
-        elif dirs & {"N", "S"}:
+        elif "N" in dirs or "S" in dirs:
             for c in (south, mid, north):
                 grid.setdefault(c, tag)
-    for dx, dy in ((-1, 0), (1, 0), (0, -1), (0, 1)):
-        grid.setdefault(cell(dx, dy), ("end", i, j))
+    for c in ((xs[0], ys[1]), (xs[2], ys[1]), (xs[1], ys[0]), (xs[1], ys[2])):
+        grid.setdefault(c, ("end", i, j))
 
 
 def paint(sk: Skeleton) -> Regions:

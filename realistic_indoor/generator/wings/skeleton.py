@@ -164,7 +164,7 @@ def _court(rng: np.random.Generator, n: int) -> ShapeSpec:
 
 def _grid(rng: np.random.Generator, n: int) -> ShapeSpec:
     """Several parallel wings joined by cross wings: a block of courtyards (large buildings)."""
-    rows = max(2, round(math.sqrt(n / rng.uniform(2.5, 4.0))))
+    rows = max(2, round(math.sqrt(n / rng.uniform(2.0, 3.0))))
     every = int(rng.integers(2, 5))
     m = max(2, round(n / rows))
     for _ in range(3):

@@ -1,0 +1,135 @@
+"""Benchmark of the building generators on one core: prints Markdown tables.
+
+1. Speed: median time to generate one building (``gen(rng)``, the call environments make each
+   episode) at 500, 2,000 and 8,000 m2 for offices, schools and the random baseline, and at
+   150, 500 and 1,000 m2 for houses (their largest size), with the median ``check_building``
+   time beside it for scale.
+2. Realism: Table 1 of the paper next to the same statistics over generated buildings at
+   default size (realistic generator and the World-Generator-like baseline), with the paper's
+   connectivity facts.
+
+Usage::
+
+    .venv/bin/python benchmarks/bench_generate.py           # about two minutes
+    .venv/bin/python benchmarks/bench_generate.py --quick   # about half a minute
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import statistics
+import time
+
+import numpy as np
+
+from realistic_indoor.building import SemanticLabel, check_building
+from realistic_indoor.generator import make_generator
+from realistic_indoor.models import connectivity_facts, reference_table
+from realistic_indoor.validator.connectivity import Connectivity, connectivity
+from realistic_indoor.validator.tables import label_table
+
+SIZES_M2 = {
+    "office": (500, 2000, 8000),
+    "school": (500, 2000, 8000),
+    "random": (500, 2000, 8000),
+    "house": (150, 500, 1000),
+}
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Run the benchmark and print its tables."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer buildings per measurement")
+    args = parser.parse_args(argv)
+    runs, sample = (15, 60) if args.quick else (40, 200)
+    print(f"# Generator benchmark ({'quick' if args.quick else 'full'}; one process, one core)\n")
+    print(f"Python {platform.python_version()}, NumPy {np.__version__}, {platform.machine()}\n")
+    _speed(runs)
+    for kind in ("office", "school", "house"):
+        _realism(kind, sample)
+
+
+def _median_ms(fn, runs: int) -> float:
+    times = []
+    for seed in range(runs):
+        t = time.perf_counter()
+        fn(seed)
+        times.append(time.perf_counter() - t)
+    return 1000 * statistics.median(times)
+
+
+def _speed(runs: int) -> None:
+    print(f"## Time per building (median of {runs} seeds, ms)\n")
+    print("| generator | area m2 | rooms | generate ms | ms per 1000 m2 | check_building ms |")
+    print("|---|---|---|---|---|---|")
+    for kind, sizes in SIZES_M2.items():
+        for area in sizes:
+            gen = make_generator(kind, area if kind != "school" or area >= 800 else 800)
+            gen(np.random.default_rng(10_000))
+            built = [gen(np.random.default_rng(s)) for s in range(runs)]
+            ms = _median_ms(lambda s, g=gen: g(np.random.default_rng(s)), runs)
+            check = _median_ms(lambda s, b=built: check_building(b[s]), runs)
+            real_area = statistics.median(b.area for b in built)
+            rooms = statistics.median(len(b.rooms) for b in built)
+            print(
+                f"| {kind} | {real_area:,.0f} | {rooms:.0f} | {ms:.1f} | {ms / real_area * 1000:.1f} | {check:.1f} |"
+            )
+    print("\nSchools start at 800 m2 (their smallest size); the 500 m2 row is an 800 m2 school.\n")
+
+
+def _row(table: dict, lab: SemanticLabel) -> list[str]:
+    r = table[lab]
+    return [
+        f"{r['share_pct']:.1f}",
+        f"{r['area_mean']:.1f}",
+        f"{r['doors_mean']:.2f}",
+        f"{r['axes_ratio_mean']:.1f}",
+    ]
+
+
+def _realism(kind: str, sample: int) -> None:
+    paper = reference_table(kind)
+    sets = {"paper": paper}
+    conn = {}
+    for name, gen in ((kind, make_generator(kind)), ("random", make_generator("random"))):
+        if name == "random" and kind != "office":
+            continue
+        built = [gen(np.random.default_rng(s)) for s in range(sample)]
+        sets[name] = label_table(built)
+        conn[name] = Connectivity.combine([connectivity(b) for b in built])
+    names = list(sets)
+    print(f"## {kind.capitalize()}: Table 1 of the paper and {sample} generated buildings at default size\n")
+    print("share %, mean area m2, mean doors, mean axes ratio per label; columns: " + ", ".join(names) + "\n")
+    print("| label | " + " | ".join(f"{n} share | {n} area | {n} doors | {n} ratio" for n in names) + " |")
+    print("|---|" + "---|" * (4 * len(names)))
+    for lab in SemanticLabel:
+        cells = [c for n in names for c in _row(sets[n], lab)]
+        print(f"| {lab.value} | " + " | ".join(cells) + " |")
+    if conn:
+        facts = connectivity_facts() if kind == "office" else {}
+        print("\n| connectivity | " + " | ".join(conn) + (" | paper |" if facts else " |"))
+        print("|---|" + "---|" * (len(conn) + bool(facts)))
+        rows = [
+            (
+                "core rooms touching a corridor %",
+                "core_touching_corridor_pct",
+                "office_real_offices_connected_to_a_corridor_pct",
+            ),
+            (
+                "rooms connected only to corridors %",
+                "only_to_corridors_pct",
+                "office_real_rooms_connected_only_to_corridors_pct",
+            ),
+            ("rooms in room mazes %", "maze_rooms_pct", None),
+            ("mean path between rooms (doors)", "mean_path_doors", None),
+        ]
+        for title, key, fact in rows:
+            values = " | ".join(f"{getattr(c, key):.1f}" for c in conn.values())
+            paper_value = f" | {facts[fact]:.0f}" if facts and fact else (" | -" if facts else "")
+            print(f"| {title} | {values}{paper_value} |")
+    print()
+
+
+if __name__ == "__main__":
+    main()

@@ -20,7 +20,7 @@ from realistic_indoor.generator.connect import break_mazes, connect_circulation,
 from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door, door_fits, exterior_walls
 from realistic_indoor.generator.functions import draw_function
 from realistic_indoor.generator.geometry import Rect, to_units
-from realistic_indoor.generator.plan import Plan, PlanRoom
+from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.typed import model_params
 from realistic_indoor.generator.wings.bays import DOOR_NEED
 from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
@@ -33,13 +33,6 @@ if TYPE_CHECKING:
 
 __all__ = ["HouseGenerator"]
 
-C, H, S, M, B = (
-    SemanticLabel.CORRIDOR,
-    SemanticLabel.HALL,
-    SemanticLabel.SMALL,
-    SemanticLabel.MEDIUM,
-    SemanticLabel.BIG,
-)
 MIN_AREA_M2, MAX_AREA_M2 = 50.0, 1000.0
 BAND_M = (2.8, 4.2)
 """Depth of the room bands on either side of a hallway (m)."""

@@ -15,7 +15,16 @@ from realistic_indoor.generator.geometry import Contact, Rect, contacts_by_pair,
 
 __all__ = ["CIRCULATION", "Plan", "PlanDoor", "PlanRoom", "build_door"]
 
-CIRCULATION = (SemanticLabel.CORRIDOR, SemanticLabel.HALL)
+C, H, S, M, B = (
+    SemanticLabel.CORRIDOR,
+    SemanticLabel.HALL,
+    SemanticLabel.SMALL,
+    SemanticLabel.MEDIUM,
+    SemanticLabel.BIG,
+)
+"""Short names of the semantic labels, as in the paper (C, H, S, M, B)."""
+
+CIRCULATION = (C, H)
 """Labels of the spaces people walk through to reach rooms."""
 
 

@@ -24,7 +24,7 @@ from realistic_indoor.generator.connect import connect_circulation, ensure_reach
 from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door
 from realistic_indoor.generator.functions import draw_function
 from realistic_indoor.generator.geometry import Contact, to_units
-from realistic_indoor.generator.plan import Plan, PlanRoom
+from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 
 if TYPE_CHECKING:
     import numpy as np
@@ -38,13 +38,6 @@ CELL_M = 3.0
 CELL = to_units(CELL_M)
 MIN_UNITS, MAX_UNITS = 5, 200
 
-C, H, S, M, B = (
-    SemanticLabel.CORRIDOR,
-    SemanticLabel.HALL,
-    SemanticLabel.SMALL,
-    SemanticLabel.MEDIUM,
-    SemanticLabel.BIG,
-)
 
 MODULE_SIDES = (0.45, 0.3, 0.15, 0.1)
 """Chances of a module side of 1, 2, 3 and 4 cells (small modules are the most common)."""

@@ -108,18 +108,23 @@ def _target(b: Building, rid: str, door) -> str:
     return OUTSIDE if other is None or other not in b.room_by_id else b.room(other).label.value
 
 
-def _connections(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
-    counts: dict[SemanticLabel, Counter] = {lab: Counter() for lab in SemanticLabel}
-    for b in plans:
-        for r in b.rooms:
-            for d in b.doors_of[r.id]:
-                counts[r.label][_target(b, r.id, d)] += 1
+def _fractions(counts: dict[SemanticLabel, Counter]) -> dict[SemanticLabel, dict[str, float]]:
+    """Each label's counts as fractions of its total (labels without any are left out)."""
     out = {}
     for lab, c in counts.items():
         total = sum(c.values())
         if total:
             out[lab] = {k: v / total for k, v in sorted(c.items())}
     return out
+
+
+def _connections(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
+    counts: dict[SemanticLabel, Counter] = {lab: Counter() for lab in SemanticLabel}
+    for b in plans:
+        for r in b.rooms:
+            for d in b.doors_of[r.id]:
+                counts[r.label][_target(b, r.id, d)] += 1
+    return _fractions(counts)
 
 
 def _functions(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
@@ -129,12 +134,7 @@ def _functions(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
     for b in plans:
         for r in b.rooms:
             counts[r.label][normalise_function(r.function)] += 1
-    out = {}
-    for lab, c in counts.items():
-        total = sum(c.values())
-        if total:
-            out[lab] = {k: v / total for k, v in sorted(c.items())}
-    return out
+    return _fractions(counts)
 
 
 def _structures(plans: list[Building]) -> LocalStructures:

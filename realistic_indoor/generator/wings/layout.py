@@ -5,7 +5,6 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.generator.connect import (
     break_mazes,
     connect_circulation,
@@ -15,7 +14,7 @@ from realistic_indoor.generator.connect import (
 from realistic_indoor.generator.doors import RULES, add_exterior_door, exterior_walls
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
 from realistic_indoor.generator.geometry import Rect, to_units
-from realistic_indoor.generator.plan import Plan, PlanRoom
+from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.wings.annex import add_annex
 from realistic_indoor.generator.wings.bays import (
     DOOR_NEED,
@@ -37,14 +36,6 @@ if TYPE_CHECKING:
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["wing_plan"]
-
-C, H, S, M, B = (
-    SemanticLabel.CORRIDOR,
-    SemanticLabel.HALL,
-    SemanticLabel.SMALL,
-    SemanticLabel.MEDIUM,
-    SemanticLabel.BIG,
-)
 
 
 def _clamp(v: float, lo_hi: tuple[float, float]) -> float:

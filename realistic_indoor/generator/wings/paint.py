@@ -250,6 +250,17 @@ def _cumulative(widths: list[int]) -> list[int]:
     return out
 
 
+def _consecutive(values: list[int], key=lambda v: None) -> list[tuple[int, int]]:
+    """``(first, last)`` of each run of consecutive sorted ``values`` with the same ``key``."""
+    out: list[tuple[int, int]] = []
+    for v in values:
+        if out and v == out[-1][1] + 1 and key(v) == key(out[-1][1]):
+            out[-1] = (out[-1][0], v)
+        else:
+            out.append((v, v))
+    return out
+
+
 def _runs(cells: list[Cell], along_x: bool) -> list[tuple[int, int, int, int]]:
     """Maximal straight runs of cells in one band: ``(k0, m0, k1, m1)`` index boxes."""
     lines: dict[int, list[int]] = {}
@@ -258,36 +269,22 @@ def _runs(cells: list[Cell], along_x: bool) -> list[tuple[int, int, int, int]]:
         lines.setdefault(fixed, []).append(moving)
     out = []
     for fixed, moving in lines.items():
-        moving.sort()
-        start = prev = moving[0]
-        for v in [*moving[1:], None]:
-            if v is None or v != prev + 1:
-                out.append((start, fixed, prev, fixed) if along_x else (fixed, start, fixed, prev))
-                if v is not None:
-                    start = v
-            if v is not None:
-                prev = v
+        for a, b in _consecutive(sorted(moving)):
+            out.append((a, fixed, b, fixed) if along_x else (fixed, a, fixed, b))
     return out
 
 
 def _strips(cells: list[Cell], along_x: bool) -> list[tuple[int, int, int, int]]:
     """Rectangles of a bay's cells: consecutive columns (rows) with the same cross extent."""
-    extent: dict[int, list[int]] = {}
+    across: dict[int, list[int]] = {}
     for k, m in cells:
         a, b = (k, m) if along_x else (m, k)
-        extent.setdefault(a, []).append(b)
+        across.setdefault(a, []).append(b)
+    extent = {a: (min(v), max(v)) for a, v in across.items()}
     out = []
-    run: list[int] = []
-    prev_ext = None
-    for a in [*sorted(extent), None]:
-        ext = (min(extent[a]), max(extent[a])) if a is not None else None
-        if run and (a is None or a != run[-1] + 1 or ext != prev_ext):
-            lo, hi = prev_ext
-            out.append((run[0], lo, run[-1], hi) if along_x else (lo, run[0], hi, run[-1]))
-            run = []
-        if a is not None:
-            run.append(a)
-            prev_ext = ext
+    for a, b in _consecutive(sorted(extent), key=extent.get):
+        lo, hi = extent[a]
+        out.append((a, lo, b, hi) if along_x else (lo, a, hi, b))
     return out
 
 

@@ -131,25 +131,23 @@ def _end_length(rng: np.random.Generator) -> int:
 
 def _line_bands(sk: Skeleton, rng: np.random.Generator, dims: Dims, style: WingStyle) -> None:
     """Bands of every column and row: room strips where wings run, end pieces elsewhere."""
-    sk.cols = []
-    for i in range(sk.nx):
-        if sk.has_vertical(i):
-            a, b = _sides(rng, dims, style)
-            sk.cols.append([a, dims.corridor, b])
-        else:
-            west = _end_length(rng) if i == 0 else 0
-            east = _end_length(rng) if i == sk.nx - 1 else 0
-            sk.cols.append([west, to_units(rng.uniform(1.5, 3.0)), east])
-    sk.rows = []
-    for j in range(sk.ny):
-        if sk.has_horizontal(j):
-            a, b = _sides(rng, dims, style)
-            sk.rows.append([a, dims.corridor, b])
-        else:
-            south = _end_length(rng) if j == 0 else 0
-            north = _end_length(rng) if j == sk.ny - 1 else 0
-            sk.rows.append([south, to_units(rng.uniform(1.5, 3.0)), north])
+    sk.cols = _axis_bands(sk.nx, sk.has_vertical, rng, dims, style)
+    sk.rows = _axis_bands(sk.ny, sk.has_horizontal, rng, dims, style)
     _deepen_filled(sk, {j for _, j in sk.filled}, dims)
+
+
+def _axis_bands(n: int, has_wing, rng: np.random.Generator, dims: Dims, style: WingStyle) -> list[list[int]]:
+    """Bands of the lattice lines along one axis (first/last lines get end pieces outwards)."""
+    out = []
+    for i in range(n):
+        if has_wing(i):
+            a, b = _sides(rng, dims, style)
+            out.append([a, dims.corridor, b])
+        else:
+            low = _end_length(rng) if i == 0 else 0
+            high = _end_length(rng) if i == n - 1 else 0
+            out.append([low, to_units(rng.uniform(1.5, 3.0)), high])
+    return out
 
 
 def _deepen_filled(sk: Skeleton, rows: set[int], dims: Dims) -> None:

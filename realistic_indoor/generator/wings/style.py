@@ -43,7 +43,8 @@ class WingStyle:
         annex_area_m2: Range of the annex's area (m2).
         annex_functions: Functions of the small rooms along the annex's far side, in turn.
         required_functions: Functions every building of the type has (one room each at least).
-        max_extent_m: Longest side of the footprint (m); longer draws are redrawn.
+        max_extent_m: Floor of the footprint's longest side (m): draws longer than 2.6 times
+            the side of a square of the same area, or than this, are redrawn.
         min_area_m2: Smallest footprint the layout supports (m2).
         max_area_m2: Largest footprint accepted (m2).
     """
@@ -70,7 +71,7 @@ class WingStyle:
     annex_area_m2: tuple[float, float] = (0.0, 0.0)
     annex_functions: tuple[str, ...] = ("washroom", "washroom", "storage")
     required_functions: tuple[str, ...] = field(default_factory=tuple)
-    max_extent_m: float = 110.0
+    max_extent_m: float = 45.0
     min_area_m2: float = 300.0
     max_area_m2: float = 50_000.0
 

@@ -40,14 +40,14 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
     Its far side holds a strip of small rooms that open onto it (changing rooms, storage).
 
     Tries the facades of corridors and halls in random order, each with the annex's long side
-    along or across the facade, and keeps the first that overlaps nothing.
+    along or across the facade and centred on it or flush with either end, and keeps the first
+    that overlaps nothing; where nothing fits, a smaller annex (80%, then 65%) is tried.
 
     Returns:
-        The annex's room index, or -1 if there was no free place (the building keeps its area).
+        The annex's room index, or -1 if there was no free place (the building is then smaller
+        by the annex's area).
     """
     ratio = rng.uniform(1.3, 1.9)
-    long_side = math.sqrt(area_m2 * ratio) * 10
-    short_side = area_m2 * 100 / long_side
     spots = [
         (i, w)
         for i, r in enumerate(plan.rooms)
@@ -55,18 +55,29 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
         for w in exterior_walls(plan, i)
         if w.length >= RULES.needed(RULES.hall)
     ]
-    for k in rng.permutation(len(spots)):
-        i, w = spots[int(k)]
-        sign = _outward(plan, i, w)
-        for along, depth in ((long_side, short_side), (short_side, long_side)):
-            mid = (w.lo + w.hi) / 2 + rng.uniform(-0.3, 0.3) * along
-            a = round(mid - along / 2)
-            b = a + round(along)
-            c0, c1 = (w.coord, w.coord + round(depth)) if sign > 0 else (w.coord - round(depth), w.coord)
-            box = (c0, a, c1, b) if w.axis == "v" else (a, c0, b, c1)
-            if min(b, w.hi) - max(a, w.lo) >= RULES.needed(RULES.hall) and _free(plan, box):
-                return _place(plan, rng, style, box, w.axis, sign)
+    order = [spots[int(k)] for k in rng.permutation(len(spots))]
+    for scale in (1.0, 0.8, 0.65):
+        long_side = math.sqrt(area_m2 * scale * ratio) * 10
+        short_side = area_m2 * scale * 100 / long_side
+        for i, w in order:
+            box = _fit(plan, w, _outward(plan, i, w), long_side, short_side)
+            if box is not None:
+                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w))
     return -1
+
+
+def _fit(plan: Plan, w: Contact, sign: int, long_side: float, short_side: float) -> Rect | None:
+    """A free box against wall ``w``: either side along it, centred or flush with either end."""
+    need = RULES.needed(RULES.hall)
+    for along, depth in ((long_side, short_side), (short_side, long_side)):
+        size = round(along)
+        starts = ((w.lo + w.hi - size) // 2, w.hi - size, w.lo, w.lo + need - size, w.hi - need)
+        c0, c1 = (w.coord, w.coord + round(depth)) if sign > 0 else (w.coord - round(depth), w.coord)
+        for a in starts:
+            box = (c0, a, c1, a + size) if w.axis == "v" else (a, c0, a + size, c1)
+            if min(a + size, w.hi) - max(a, w.lo) >= need and _free(plan, box):
+                return box
+    return None
 
 
 def _place(plan: Plan, rng: np.random.Generator, style: WingStyle, box: Rect, axis: str, sign: int) -> int:

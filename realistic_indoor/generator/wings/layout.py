@@ -162,12 +162,39 @@ def wing_plan(
 ) -> tuple[Plan, dict[str, str]]:
     """Lay out a wing building of about ``area_m2``.
 
+    An annex (a school's gym) takes up to a quarter of the area; where it finds no free place
+    beside the wings, the wings are laid out again over the whole area.
+
     Returns:
         The plan (rooms, doors, functions) and facts about the layout for the metadata
         (``shape``).
     """
+    annex_m2 = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2) if style.annex else 0.0
+    laid = _lay_out(rng, area_m2, model, style, annex_m2)
+    if laid is None:
+        laid = _lay_out(rng, area_m2, model, style, 0.0)
+    plan, sk = laid
+    connect_circulation(plan)
+    _entrances(plan, rng, _lobby(plan), style, model)
+    connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
+    ensure_reachable(plan, rng)
+    break_mazes(plan, rng)
+    roles = FunctionRoles(
+        service=style.service_functions,
+        storage=style.storage_functions,
+        ends=style.end_functions,
+        entrance=style.entrance_functions,
+    )
+    assign_functions(plan, model, rng, roles)
+    _require(plan, style.required_functions)
+    return plan, {"shape": sk.shape}
+
+
+def _lay_out(
+    rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, style: WingStyle, annex_m2: float
+) -> tuple[Plan, Skeleton] | None:
+    """Rooms and corridors of the wings and the annex (``None`` if the annex found no place)."""
     dims = _dims(rng, model, style)
-    annex_m2 = rng.uniform(*style.annex_area_m2) if style.annex else 0.0
     sk = _skeleton(rng, area_m2 - annex_m2, dims, model, style)
     regions = paint(sk)
     carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
@@ -184,21 +211,9 @@ def wing_plan(
     for rect in regions.ends:
         plan.add(PlanRoom([rect], S, role="end"))
     _corridors(plan, regions, model, rng, dims, style)
-    annex = add_annex(plan, rng, style, annex_m2) if style.annex else -1
-    connect_circulation(plan)
-    _entrances(plan, rng, _lobby(plan), annex, style, model)
-    connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
-    ensure_reachable(plan, rng)
-    break_mazes(plan, rng)
-    roles = FunctionRoles(
-        service=style.service_functions,
-        storage=style.storage_functions,
-        ends=style.end_functions,
-        entrance=style.entrance_functions,
-    )
-    assign_functions(plan, model, rng, roles)
-    _require(plan, style.required_functions)
-    return plan, {"shape": sk.shape}
+    if annex_m2 and add_annex(plan, rng, style, annex_m2) < 0:
+        return None
+    return plan, sk
 
 
 def _require(plan: Plan, functions: tuple[str, ...]) -> None:
@@ -270,7 +285,7 @@ def _corridors(
 
 
 def _entrances(
-    plan: Plan, rng: np.random.Generator, lobby: int, annex: int, style: WingStyle, model: BuildingTypeModel
+    plan: Plan, rng: np.random.Generator, lobby: int, style: WingStyle, model: BuildingTypeModel
 ) -> None:
     """The main entrance in the lobby (or at a corridor end), side doors in halls, exits at corridor ends.
 
@@ -290,5 +305,8 @@ def _entrances(
         across = "v" if (x1 - x0) >= (y1 - y0) else "h"
         placed |= add_exterior_door(plan, i, RULES.exit, axis=across, margin=RULES.open_margin)
     if not placed:
-        order = sorted(range(len(plan.rooms)), key=lambda i: (not plan.rooms[i].is_circulation, i == annex))
+        order = sorted(
+            range(len(plan.rooms)),
+            key=lambda i: (not plan.rooms[i].is_circulation, plan.rooms[i].role == "annex"),
+        )
         any(add_exterior_door(plan, i, RULES.room) for i in order)

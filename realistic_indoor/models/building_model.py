@@ -49,11 +49,6 @@ class LabelStats:
         """An area drawn from a log-normal with this mean and standard deviation, clipped (m2)."""
         return float(min(max(_lognormal(rng, self.area_mean, self.area_std), low), high))
 
-    def sample_axes_ratio(self, rng: np.random.Generator, high: float = 20.0) -> float:
-        """An axes ratio: 1 plus a log-normal with this mean minus 1, clipped to ``high``."""
-        excess = max(self.axes_ratio_mean - 1.0, 1e-3)
-        return float(min(1.0 + _lognormal(rng, excess, self.axes_ratio_std), high))
-
 
 @dataclass(frozen=True)
 class LocalStructures:

@@ -106,39 +106,39 @@ def _bar(rng: np.random.Generator, n: int) -> ShapeSpec:
 
 
 def _l(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.25, 0.45)))
+    k = max(1, round(n * rng.uniform(0.3, 0.5)))
     m = max(1, n - k)
     return ShapeSpec("L", m, ((int(rng.choice([0, m])), int(rng.choice([-1, 1])), k),))
 
 
 def _t(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.25, 0.4)))
+    k = max(1, round(n * rng.uniform(0.3, 0.45)))
     m = max(2, n - k)
     return ShapeSpec("T", m, ((int(rng.integers(1, m)), 1, k),))
 
 
 def _cross(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.15, 0.25)))
+    k = max(1, round(n * rng.uniform(0.2, 0.3)))
     m = max(2, n - 2 * k)
     at = int(rng.integers(1, m))
     return ShapeSpec("cross", m, ((at, 1, k), (at, -1, k)))
 
 
 def _u(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.15, 0.25)))
-    m = max(2, n - 2 * k)
+    m = max(2, round(n * rng.uniform(0.3, 0.5)))
+    k = max(1, round((n - m) / 2))
     return ShapeSpec("U", m, ((0, 1, k), (m, 1, k)))
 
 
 def _h(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.1, 0.15)))
-    m = max(1, n - 4 * k)
+    m = max(1, round(n * rng.uniform(0.15, 0.35)))
+    k = max(1, round((n - m) / 4))
     return ShapeSpec("H", m, ((0, 1, k), (0, -1, k), (m, 1, k), (m, -1, k)))
 
 
 def _e(rng: np.random.Generator, n: int) -> ShapeSpec:
-    k = max(1, round(n * rng.uniform(0.12, 0.2)))
-    m = max(2, 2 * ((n - 3 * k) // 2))
+    m = max(2, 2 * round(n * rng.uniform(0.25, 0.4) / 2))
+    k = max(1, round((n - m) / 3))
     return ShapeSpec("E", m, ((0, 1, k), (m // 2, 1, k), (m, 1, k)))
 
 

@@ -11,9 +11,9 @@ Measures, in one process with random actions:
    4,000 m2 (or, with ``--source plans``, fixed real plans of growing size).
 
 Times are CPU seconds of the benchmark's process (``time.process_time``), so that other jobs on
-a shared machine do not count; on a quiet machine wall clock agrees. Memory per environment is what eight environments allocate when made, reset and stepped
-(``tracemalloc``), divided by eight; "world + map" is the part held by the world's and the
-robot map's arrays.
+a shared machine do not count; on a quiet machine wall clock agrees. Memory per environment is
+what eight environments allocate when made, reset and stepped (``tracemalloc``), divided by
+eight; "world + map" is the part held by the world's and the robot map's arrays.
 
 Usage::
 

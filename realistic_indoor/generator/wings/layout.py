@@ -16,13 +16,8 @@ from realistic_indoor.generator.functions import FunctionRoles, assign_functions
 from realistic_indoor.generator.geometry import Rect, to_units
 from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.wings.annex import add_annex
-from realistic_indoor.generator.wings.bays import (
-    DOOR_NEED,
-    BayContext,
-    Budget,
-    core_shape,
-    subdivide,
-)
+from realistic_indoor.generator.wings.bays import DOOR_NEED, BayContext, subdivide
+from realistic_indoor.generator.wings.budget import building_budget
 from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
 from realistic_indoor.generator.wings.halls import carve_hall_bays
 from realistic_indoor.generator.wings.paint import Regions, paint
@@ -92,71 +87,6 @@ def _skeleton(
     return best
 
 
-def _budget(
-    regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int], shallow_depth: int
-) -> Budget:
-    """Units the bays should hold so that the building matches the model's label shares.
-
-    Small rooms come from corridor ends, closets, service cores (the model's clustered share),
-    shallow strips and, for the rest, notches beside rooms; shallow strips take medium rooms
-    once the small ones are enough. The number of ordinary rooms is the one whose frontage
-    fills the deep strips (found by bisection: the frontage grows with it).
-    """
-    main = [b for b in regions.bays if b.depth >= shallow_depth]
-    shallow = [b for b in regions.bays if b.depth < shallow_depth]
-    length = sum(b.length for b in main)
-    depth = sum(b.depth * b.length for b in main) / max(length, 1)
-    s_length = sum(b.length for b in shallow)
-    s_depth = sum(b.depth * b.length for b in shallow) / max(s_length, 1)
-    p = model.shares()
-    total = max(p[S] + p[M] + p[B], 1e-6)
-    ps, pm, pb = p[S] / total, p[M] / total, p[B] / total
-    area = {lab: model.stats(lab).area_mean * 100 for lab in (S, M, B)}
-    rows, side, per_core = core_shape(model, round(depth), core_rows)
-    core_width = stub + 2 * side if per_core == 2 * rows else side * per_core
-    w_small = max(area[S] / max(s_depth, 1), 15)
-    w_shallow_m = area[M] / max(s_depth, 1)
-    st = model.structures
-
-    def plan_for(n: float) -> dict[str, float]:
-        need_s = ps * n
-        cores = st.clustered_small_rooms * need_s / per_core
-        closets = st.closets_per_room * (pm + pb) * n
-        rest = need_s * (1 - st.clustered_small_rooms) - closets - len(regions.ends)
-        small = min(max(rest, 0.0), s_length / w_small)
-        notches = max(rest - small, 0.0)
-        closets = max(closets + min(rest, 0.0), 0.0)
-        shallow_m = max(s_length - small * w_small, 0.0) / w_shallow_m
-        paired = closets + notches
-        return {
-            "M": pm * n - shallow_m - 0.75 * paired,
-            "B": pb * n - 0.25 * paired,
-            "closet": closets,
-            "notch": notches,
-            "core": cores,
-            "S": small,
-            "shallow_m": shallow_m,
-        }
-
-    def frontage(n: float) -> float:
-        w = plan_for(n)
-        paired = w["closet"] + w["notch"]
-        rooms = (max(w["M"], 0) + 0.75 * paired) * area[M] / depth + (max(w["B"], 0) + 0.25 * paired) * area[
-            B
-        ] / depth
-        return rooms + w["core"] * core_width + w["notch"] * max(math.sqrt(area[S]), 15)
-
-    lo, hi = 0.0, 1.0
-    while frontage(hi) < length and hi < 1e6:
-        hi *= 2
-    for _ in range(40):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if frontage(mid) < length else (lo, mid)
-    want = plan_for(lo)
-    want["M"] += want.pop("shallow_m")
-    return Budget(want)
-
-
 def wing_plan(
     rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, style: WingStyle
 ) -> tuple[Plan, dict[str, str]]:
@@ -204,7 +134,7 @@ def _lay_out(
     circulation = regions.corridors + [r for _, rects in regions.halls for r in rects]
     stub = to_units(rng.uniform(1.3, 1.6))
     limit = (dims.depth + dims.shallow) // 2
-    budget = _budget(regions, model, stub, style.core_rooms, limit)
+    budget = building_budget(regions, model, stub, style.core_rooms, limit)
     ctx = BayContext(model, budget, circulation, stub, style.core_rooms, limit)
     for k in rng.permutation(len(regions.bays)):
         subdivide(plan, regions.bays[int(k)], rng, ctx)

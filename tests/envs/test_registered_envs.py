@@ -8,7 +8,7 @@ import warnings
 import gymnasium as gym
 import numpy as np
 import pytest
-from env_helpers import make_env
+from env_helpers import TEST_AREAS_M2, make_env
 from gymnasium.utils.env_checker import check_env, data_equivalence
 
 from realistic_indoor.envs import PRESETS
@@ -89,11 +89,12 @@ def test_env__truncates_exactly_at_the_step_limit(env_id):
 
 
 @pytest.mark.parametrize("mode", ["sync", "async"])
-@pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
+@pytest.mark.parametrize("env_id", ALL_IDS)
 def test_env__runs_in_gym_make_vec(env_id, mode):
-    from env_helpers import ToyOffice
-
-    envs = gym.make_vec(env_id, num_envs=2, vectorization_mode=mode, generator=ToyOffice(), max_steps=10)
+    building_type = PRESETS[env_id].kwargs["building_type"]
+    envs = gym.make_vec(
+        env_id, num_envs=2, vectorization_mode=mode, area_m2=TEST_AREAS_M2[building_type], max_steps=10
+    )
     obs, _ = envs.reset(seed=0)
     for _ in range(15):  # past the step limit: sub-environments reset on their own
         obs, reward, *_ = envs.step(envs.action_space.sample())

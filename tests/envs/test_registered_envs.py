@@ -88,20 +88,22 @@ def test_env__truncates_exactly_at_the_step_limit(env_id):
     assert ends[-1] == (False, True)
 
 
-@pytest.mark.parametrize("mode", ["sync", "async"])
 @pytest.mark.parametrize("env_id", ALL_IDS)
-def test_env__runs_in_gym_make_vec(env_id, mode):
-    building_type = PRESETS[env_id].kwargs["building_type"]
-    envs = gym.make_vec(
-        env_id, num_envs=2, vectorization_mode=mode, area_m2=TEST_AREAS_M2[building_type], max_steps=10
-    )
-    obs, _ = envs.reset(seed=0)
-    for _ in range(15):  # past the step limit: sub-environments reset on their own
-        obs, reward, *_ = envs.step(envs.action_space.sample())
-    assert obs["local_map"].shape == (2, *envs.single_observation_space["local_map"].shape)
-    assert reward.shape == (2,) and np.isfinite(reward).all()
-    assert envs.single_observation_space.contains({k: v[0] for k, v in obs.items()})
-    envs.close()
+def test_env__gym_make_vec_sync_and_async_agree(env_id):
+    area = TEST_AREAS_M2[PRESETS[env_id].kwargs["building_type"]]
+    results = {}
+    for mode in ("sync", "async"):
+        envs = gym.make_vec(env_id, num_envs=2, vectorization_mode=mode, area_m2=area, max_steps=10)
+        envs.action_space.seed(0)
+        obs, _ = envs.reset(seed=0)
+        for _ in range(15):  # past the step limit: sub-environments reset on their own
+            obs, reward, *_ = envs.step(envs.action_space.sample())
+        assert obs["local_map"].shape == (2, *envs.single_observation_space["local_map"].shape)
+        assert envs.single_observation_space.contains({k: v[0] for k, v in obs.items()})
+        results[mode] = (obs, reward)
+        envs.close()
+    assert data_equivalence(results["sync"], results["async"], exact=True)
+    assert not np.array_equal(results["sync"][0]["scan"][0], results["sync"][0]["scan"][1])
 
 
 @pytest.mark.parametrize("env_id", ALL_IDS)

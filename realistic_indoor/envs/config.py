@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
+from os import PathLike
 from pathlib import Path
 from typing import Any
 
@@ -119,6 +120,8 @@ class EnvConfig:
             )
         if self.building is not None and not isinstance(self.building, Building):
             raise ConfigError(f"EnvConfig.building must be a Building, got {type(self.building).__name__}")
+        if self.plan_path is not None and not isinstance(self.plan_path, (str, PathLike)):
+            raise ConfigError(f"EnvConfig.plan_path must be a file path, got {self.plan_path!r}")
         if self.generator is not None and not callable(self.generator):
             raise ConfigError(
                 f"EnvConfig.generator must be a callable rng -> Building, got {self.generator!r}"

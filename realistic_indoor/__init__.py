@@ -5,6 +5,10 @@ The main entry points are imported lazily, so ``import realistic_indoor`` stays 
 - :class:`Building`, :class:`Room`, :class:`Door`, :func:`check_building`: the data model;
 - :func:`load`, :func:`save`: files in every supported format;
 - :func:`generate`: a realistic office, school or house (see :mod:`realistic_indoor.generator`).
+
+Importing the package registers the Gymnasium ids (``OfficeExplore-v0``, ..., see
+:mod:`realistic_indoor.envs`), so ``gym.make("OfficeExplore-v0")`` works after
+``import realistic_indoor``; registration imports gymnasium only, not the simulator.
 """
 
 from __future__ import annotations
@@ -28,6 +32,15 @@ _LAZY = {
 }
 
 __all__ = ["__version__", *_LAZY]
+
+
+def _register_envs() -> None:
+    from realistic_indoor.envs.registration import register_envs
+
+    register_envs()
+
+
+_register_envs()
 
 
 def __getattr__(name: str) -> Any:

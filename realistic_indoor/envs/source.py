@@ -56,6 +56,7 @@ def building_source(config: EnvConfig) -> Callable[[np.random.Generator], Buildi
     from realistic_indoor.generator import make_generator
 
     params: dict[str, Any] = dict(config.generator_params)
-    if config.area_m2 is not None:
+    grid_given = "width_units" in params or "height_units" in params
+    if config.area_m2 is not None and not grid_given:
         params["area_m2"] = config.area_m2
     return make_generator(config.building_type, **params)

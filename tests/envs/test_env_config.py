@@ -73,3 +73,13 @@ def test_preset_config__is_the_registered_environment_config():
     env = gym.make("SchoolSearch-v0", max_steps=11, area_m2=900.0)
     assert env.unwrapped.config == preset_config("SchoolSearch-v0", max_steps=11, area_m2=900.0)
     assert env.unwrapped.config.building_type == "school"
+
+
+def test_random_env__grid_size_in_generator_params_overrides_the_default_area():
+    import gymnasium as gym
+
+    env = gym.make("RandomExplore-v0", generator_params={"width_units": 8, "height_units": 6})
+    env.reset(seed=0)
+    x0, y0, x1, y1 = env.unwrapped.building.bounds
+    assert (round(x1 - x0), round(y1 - y0)) in {(24, 18), (18, 24)}
+    env.close()

@@ -479,3 +479,14 @@ def test_write__empty_building_is_a_config_error(tmp_path):
 
     with pytest.raises(ConfigError, match="without rooms"):
         write(Building("office", ()), tmp_path / "empty.xml")
+
+
+def test_label_map__knows_every_function_the_generators_use():
+    from realistic_indoor.generator import GENERATOR_NAMES, generate
+    from realistic_indoor.io.function_labels import load_label_map
+
+    known = load_label_map(None)
+    used = {
+        r.function for name in GENERATOR_NAMES for seed in range(20) for r in generate(name, seed=seed).rooms
+    }
+    assert sorted(used - set(known)) == []

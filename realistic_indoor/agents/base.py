@@ -1,0 +1,121 @@
+"""The agent interface, and what an agent may know about its robot (never about the building)."""
+
+from __future__ import annotations
+
+import math
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from typing import Any, ClassVar
+
+import numpy as np
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.lidar import LidarConfig
+from realistic_indoor.sim.robot import RobotConfig
+from realistic_indoor.sim.victims import VictimConfig
+
+__all__ = ["Agent", "RobotSpec"]
+
+
+@dataclass(frozen=True)
+class RobotSpec:
+    """The robot an agent drives: its sensors, limits and action space, as a datasheet gives them.
+
+    This is everything an agent learns from the environment besides its observations: nothing
+    about the building, the ground-truth map or the victims' positions.
+
+    Attributes:
+        lidar: The laser scanner (field of view, beams, range); scans come normalised by
+            ``lidar.max_range_m`` in ``obs["scan"]``.
+        robot: Disc radius (m), speed and turn limits (m/s, rad/s), control rate (Hz).
+        victims: The victim sensor (range in m, field of view in rad) in search tasks; ``None``
+            in exploration.
+        action_type: ``"continuous"`` (``(v, w)`` as fractions of the limits) or ``"discrete"``
+            (an index into :data:`realistic_indoor.envs.actions.DISCRETE_ACTIONS`).
+    """
+
+    lidar: LidarConfig = field(default_factory=LidarConfig)
+    robot: RobotConfig = field(default_factory=RobotConfig)
+    victims: VictimConfig | None = None
+    action_type: str = "continuous"
+
+    def __post_init__(self) -> None:
+        if self.action_type not in ("continuous", "discrete"):
+            raise ConfigError(
+                f"RobotSpec.action_type must be continuous or discrete, got {self.action_type!r}"
+            )
+
+    @classmethod
+    def from_env(cls, env: Any) -> RobotSpec:
+        """The spec of an environment of this package (``gym.make`` result or the env itself).
+
+        Reads the sensor, robot and action settings of ``env.unwrapped.config``; the victim
+        sensor only if the observation has a ``victims`` key.
+
+        Raises:
+            ConfigError: If ``env`` is not one of this package's environments.
+        """
+        config = getattr(getattr(env, "unwrapped", env), "config", None)
+        if config is None or not hasattr(config, "lidar"):
+            raise ConfigError(
+                f"agents need a realistic_indoor environment (ExploreEnv or SearchEnv), got {type(env).__name__}"
+            )
+        searching = "victims" in getattr(getattr(env, "observation_space", None), "spaces", {})
+        return cls(config.lidar, config.robot, config.victims if searching else None, config.action_type)
+
+    @property
+    def dt_s(self) -> float:
+        """Duration of one control step (s)."""
+        return 1.0 / self.robot.control_hz
+
+    def beam_offsets_rad(self) -> np.ndarray:
+        """Directions of the laser beams relative to the heading (rad), right to left."""
+        c = self.lidar
+        if c.n_beams == 1:
+            return np.zeros(1)
+        full_circle = math.isclose(c.fov_rad, 2 * math.pi)
+        return np.linspace(-c.fov_rad / 2, c.fov_rad / 2, c.n_beams, endpoint=not full_circle)
+
+    def action(self, v_m_s: float, w_rad_s: float) -> np.ndarray | int:
+        """The action that commands ``(v m/s, w rad/s)`` (the nearest one if discrete)."""
+        v = max(-1.0, min(1.0, v_m_s / self.robot.max_speed_m_s))
+        w = max(-1.0, min(1.0, w_rad_s / self.robot.max_turn_rate_rad_s))
+        if self.action_type == "continuous":
+            return np.array((v, w), dtype=np.float32)
+        from realistic_indoor.envs.actions import DISCRETE_ACTIONS
+
+        table = np.array([(a, b) for _, a, b in DISCRETE_ACTIONS])
+        return int(np.argmin((table[:, 0] - v) ** 2 + (table[:, 1] - w) ** 2))
+
+
+class Agent(ABC):
+    """An agent: one episode at a time, an action per observation.
+
+    Agents see only what the robot senses: the observation (laser scan, map image, velocity,
+    odometry, victims in view) and the ``info`` dict (coverage, distance, collisions). They
+    never read the building or the environment's internals.
+
+    Args:
+        spec: The robot's sensors and limits.
+
+    Attributes:
+        name: Registry name (see :func:`realistic_indoor.agents.make_agent`).
+        spec: The robot's sensors and limits.
+    """
+
+    name: ClassVar[str] = ""
+
+    def __init__(self, spec: RobotSpec) -> None:
+        if not isinstance(spec, RobotSpec):
+            raise ConfigError(f"agents take a RobotSpec (RobotSpec.from_env(env)), got {type(spec).__name__}")
+        self.spec = spec
+
+    def reset(self, seed: int | None = None) -> None:  # noqa: B027 - most agents have nothing to reset
+        """Forget the last episode; ``seed`` seeds an agent's own randomness, if it has any."""
+
+    @abstractmethod
+    def act(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> np.ndarray | int:
+        """The action for this observation (in the environment's action space)."""
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}()"

@@ -1,0 +1,357 @@
+"""The map-based explorer loop that frontier agents share: map, choose a goal, plan, follow, repeat.
+
+Each step the agent adds the scan to its own map (:class:`OwnMap`), then keeps its plan or makes
+a new one, and steers along the path. It replans when the path is done, when its goal is no
+longer a frontier, when the path runs into a newly seen obstacle, after a collision, and when
+the map has grown enough since the last plan. A goal the robot cannot get closer to is
+blacklisted. In victim search, a victim the sensor detects becomes the next goal: the robot goes
+to it, then resumes exploring. Subclasses only choose the goal among the frontiers.
+"""
+
+from __future__ import annotations
+
+import math
+from abc import abstractmethod
+from collections import deque
+from dataclasses import dataclass, field
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from realistic_indoor.agents.base import Agent, RobotSpec
+from realistic_indoor.agents.follower import FollowerConfig, PathFollower
+from realistic_indoor.agents.frontiers import Frontiers, find_frontiers, unobserved
+from realistic_indoor.agents.occupancy import FREE_CELL, Box, OwnMap
+from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
+from realistic_indoor.agents.victims import VictimTracker
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim._checks import require_int, require_positive
+
+__all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
+
+_BACKUP_STEPS, _BACKUP_SPEED = 3, 0.3
+"""A stuck robot backs up this many steps at this share of its top speed, then replans."""
+_CONTACT_STEPS = 8
+"""A robot in contact with a wall for this many steps in a row is stuck."""
+_EXPLAINED_M = 0.15
+"""A collision is explained by a wall the laser sees within this distance of the robot's disc (m)."""
+
+
+@dataclass(frozen=True)
+class ExplorerConfig:
+    """Settings of the map-based explorers.
+
+    Attributes:
+        map_resolution_m: Cell side of the agent's own map (m).
+        min_frontier_m: Frontiers shorter than this are ignored (m).
+        replan_steps: Replan after this many steps if the map has grown by ``replan_new_m2``.
+        replan_new_m2: Newly mapped area that makes a periodic replan worth it (m2).
+        stuck_steps: A robot that moved less than ``stuck_move_m`` in this many steps while
+            heading for the same goal is stuck: the goal is blacklisted, and the robot backs
+            up a little. So is a robot that touched a wall while driving 8 steps in a row.
+        stuck_move_m: See ``stuck_steps`` (m).
+        blacklist_radius_m: Frontier cells this close to a blacklisted goal are ignored (m).
+        goal_still_open_m: A goal stays valid while unobserved cells lie this close to it (m).
+        min_goal_m: Frontier cells this close to the robot are not goals (m): the laser's
+            blind sector behind the robot would otherwise make its own cell a frontier.
+        victim_approach_m: In victim search, the robot goes this close to each victim it
+            detects (m); ``None`` ignores detected victims.
+        bump_half_width_m: A collision the laser does not explain (nothing seen within 0.15 m
+            of the robot: the invisible line across an entrance) marks a wall across the robot's
+            front, this much wider than the robot on each side (m).
+        cost: Costmap weights.
+        follower: Path-tracking settings.
+    """
+
+    map_resolution_m: float = 0.1
+    min_frontier_m: float = 0.3
+    replan_steps: int = 10
+    replan_new_m2: float = 1.0
+    stuck_steps: int = 25
+    stuck_move_m: float = 0.3
+    blacklist_radius_m: float = 1.0
+    goal_still_open_m: float = 0.3
+    min_goal_m: float = 0.6
+    victim_approach_m: float | None = 1.0
+    bump_half_width_m: float = 0.4
+    cost: CostConfig = field(default_factory=CostConfig)
+    follower: FollowerConfig = field(default_factory=FollowerConfig)
+
+    def __post_init__(self) -> None:
+        for name, unit in (
+            ("map_resolution_m", "m"),
+            ("min_frontier_m", "m"),
+            ("stuck_move_m", "m"),
+            ("blacklist_radius_m", "m"),
+            ("goal_still_open_m", "m"),
+            ("min_goal_m", "m"),
+            ("bump_half_width_m", "m"),
+        ):
+            require_positive("ExplorerConfig", name, getattr(self, name), unit)
+        require_positive("ExplorerConfig", "replan_new_m2", self.replan_new_m2, "m2", allow_zero=True)
+        require_int("ExplorerConfig", "replan_steps", self.replan_steps, 1)
+        require_int("ExplorerConfig", "stuck_steps", self.stuck_steps, 2)
+        if self.victim_approach_m is not None:
+            require_positive("ExplorerConfig", "victim_approach_m", self.victim_approach_m, "m")
+        if not isinstance(self.cost, CostConfig) or not isinstance(self.follower, FollowerConfig):
+            raise ConfigError("ExplorerConfig.cost and .follower must be a CostConfig and a FollowerConfig")
+
+
+class PlanContext(NamedTuple):
+    """What a goal chooser sees at planning time, on the planning window of the map.
+
+    Attributes:
+        box: The window of the map (cells) the arrays below cover.
+        state: Map cells in the window.
+        todo: Cells still to observe (unknown, or unswept in search).
+        clearance_m: Distance from each cell to the nearest occupied cell (m).
+        cost: Costmap (cost per cell, ``inf`` where lethal).
+        start: The robot's cell in the window.
+        pose: The robot's pose (odometry frame).
+        resolution_m: Cell side (m).
+    """
+
+    box: Box
+    state: np.ndarray
+    todo: np.ndarray
+    clearance_m: np.ndarray
+    cost: np.ndarray
+    start: tuple[int, int]
+    pose: tuple[float, float, float]
+    resolution_m: float
+
+
+class MapExplorer(Agent):
+    """Base of the frontier explorers: the map, plan, follow loop (see the module docstring).
+
+    Args:
+        spec: The robot's sensors and limits.
+        config: Explorer settings.
+
+    Attributes:
+        map: The agent's own map.
+        victims: Victims detected (search only; empty in exploration).
+        finished: Whether the last plan found no reachable frontier (exploration is over).
+    """
+
+    def __init__(self, spec: RobotSpec, config: ExplorerConfig | None = None) -> None:
+        super().__init__(spec)
+        self.config = config or ExplorerConfig()
+        if not isinstance(self.config, ExplorerConfig):
+            raise ConfigError(f"config must be an ExplorerConfig, got {type(self.config).__name__}")
+        c = self.config
+        sensor = None if spec.victims is None else (spec.victims.sensor_range_m, spec.victims.sensor_fov_rad)
+        self.map = OwnMap(spec.beam_offsets_rad(), spec.lidar.max_range_m, c.map_resolution_m, sensor)
+        self.victims = VictimTracker(spec.victims.sensor_range_m if spec.victims else 1.0)
+        self.follower = PathFollower(spec.robot.max_speed_m_s, spec.robot.max_turn_rate_rad_s, c.follower)
+        self._offsets = spec.beam_offsets_rad()
+        self._min_cells = max(1, math.ceil(c.min_frontier_m / c.map_resolution_m))
+        self.reset()
+
+    def reset(self, seed: int | None = None) -> None:
+        """Forget the map, the plan, the blacklist and the victims."""
+        self.map.reset()
+        self.victims.reset()
+        self.follower.clear()
+        self.blacklist: list[tuple[float, float]] = []
+        self.finished = False
+        self._goal: tuple[float, float] | None = None
+        self._victim: int | None = None
+        self._since_plan = 0
+        self._new_cells = 0
+        self._collisions = 0
+        self._last_v = 0.0
+        self._last_pose: tuple[float, float, float] | None = None
+        self._backing = 0
+        self._contact = 0
+        self._recent: deque[tuple[float, float]] = deque(maxlen=self.config.stuck_steps)
+
+    # -- the loop ----------------------------------------------------------------------------------------
+    def act(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> np.ndarray | int:
+        """Map the scan, replan if needed, and return the action that follows the path."""
+        pose = (float(obs["pose"][0]), float(obs["pose"][1]), float(obs["pose"][2]))
+        ranges = np.asarray(obs["scan"], dtype=np.float32) * np.float32(self.spec.lidar.max_range_m)
+        collided = self._bumped(pose, ranges, float(obs["velocity"][0]), info)
+        self._new_cells += self.map.integrate(pose, ranges)
+        self._since_plan += 1
+        self._recent.append(pose[:2])
+        if "victims" in obs and self.config.victim_approach_m is not None:
+            self.victims.observe(pose, obs["victims"])
+        if self._backing > 0:
+            self._backing -= 1
+            v, w = -_BACKUP_SPEED * self.spec.robot.max_speed_m_s, 0.0
+        elif self._stuck():
+            self._give_up()
+            v, w = 0.0, 0.0
+        else:
+            if collided or self._needs_plan(pose):
+                self._plan(pose)
+            v, w = self.follower.command(pose, self._clearance_ahead(ranges))
+        self._last_v = v
+        self._last_pose = pose
+        return self.spec.action(v, w)
+
+    def _bumped(
+        self, pose: tuple[float, float, float], ranges: np.ndarray, speed_m_s: float, info: dict[str, Any]
+    ) -> bool:
+        """Whether the robot touched a wall during the last step.
+
+        A contact that stopped the robot while it drove forward, with no wall in the laser's
+        view near it, is an obstacle the laser cannot see (the line across an entrance): it is
+        marked on the map, across the direction the robot was driving.
+        """
+        count = int(info.get("collisions", 0))
+        hit = count > self._collisions
+        self._collisions = count
+        self._contact = self._contact + 1 if hit and self._last_v > 0.0 else 0
+        if hit and self._last_pose is not None and self._unexplained(pose, ranges, speed_m_s):
+            r = self.spec.robot.radius_m
+            self.map.mark_blocked(
+                (pose[0], pose[1], self._last_pose[2]), r, r + self.config.bump_half_width_m
+            )
+        return hit
+
+    def _unexplained(self, pose: tuple[float, float, float], ranges: np.ndarray, speed_m_s: float) -> bool:
+        """Whether the robot, driving forward, went less than half the way, with no wall seen near."""
+        expected = speed_m_s * self.spec.dt_s
+        if speed_m_s < 0.5 * self.spec.robot.max_speed_m_s:
+            return False
+        x0, y0, heading = self._last_pose
+        forward = (pose[0] - x0) * math.cos(heading) + (pose[1] - y0) * math.sin(heading)
+        return forward < 0.5 * expected and float(np.min(ranges)) > self.spec.robot.radius_m + _EXPLAINED_M
+
+    def _clearance_ahead(self, ranges: np.ndarray) -> float:
+        """Free distance in front of the robot's disc along its heading (m), from the scan."""
+        r = self.spec.robot.radius_m
+        lateral = np.abs(ranges * np.sin(self._offsets))
+        ahead = (np.abs(self._offsets) < math.pi / 2) & (lateral <= r)
+        if not ahead.any():
+            return self.spec.lidar.max_range_m
+        return float(np.min(ranges[ahead] * np.cos(self._offsets[ahead]))) - r
+
+    def _needs_plan(self, pose: tuple[float, float, float]) -> bool:
+        c = self.config
+        if self.finished:
+            return self._since_plan >= c.replan_steps
+        if self.follower.done(pose):
+            if self._victim is not None:
+                self.victims.visited[self._victim] = True
+            return True
+        if self._victim is None and (self._goal is None or not self._goal_open()):
+            return True
+        if self._path_blocked():
+            return True
+        if self._victim is None and self.victims.next_target() is not None:
+            return True
+        grown = self._new_cells * self.map.resolution_m**2 >= c.replan_new_m2
+        return self._since_plan >= c.replan_steps and grown
+
+    def _stuck(self) -> bool:
+        if self._contact >= _CONTACT_STEPS:
+            return True
+        if len(self._recent) < self._recent.maxlen:
+            return False
+        (x0, y0), (x1, y1) = self._recent[0], self._recent[-1]
+        return math.hypot(x1 - x0, y1 - y0) < self.config.stuck_move_m
+
+    def _give_up(self) -> None:
+        if self._victim is not None:
+            self.victims.visited[self._victim] = True
+        elif self._goal is not None:
+            self.blacklist.append(self._goal)
+        self.follower.clear()
+        self._recent.clear()
+        self._contact = 0
+        self._backing = _BACKUP_STEPS
+
+    def _goal_open(self) -> bool:
+        r, c = self.map.to_cell(*self._goal)
+        k = max(1, round(self.config.goal_still_open_m / self.map.resolution_m))
+        window = (slice(max(r - k, 0), r + k + 1), slice(max(c - k, 0), c + k + 1))
+        searched = None if self.map.searched is None else self.map.searched[window]
+        return bool(unobserved(self.map.state[window], searched).any())
+
+    def _path_blocked(self) -> bool:
+        ahead = self.follower.remaining[:40]
+        if len(ahead) == 0:
+            return False
+        res = self.map.resolution_m
+        cols = np.floor((ahead[:, 0] - self.map.origin[0]) / res).astype(np.intp)
+        rows = np.floor((ahead[:, 1] - self.map.origin[1]) / res).astype(np.intp)
+        return bool(np.any(self.map.state[rows, cols] != FREE_CELL))
+
+    # -- planning ----------------------------------------------------------------------------------------
+    def _plan(self, pose: tuple[float, float, float]) -> None:
+        self._since_plan = 0
+        self._new_cells = 0
+        ctx = self._context(pose)
+        self._victim = self.victims.next_target() if self.config.victim_approach_m is not None else None
+        if self._victim is not None:
+            found = self._to_victim(ctx, self.victims.positions[self._victim])
+            if found is None:
+                self.victims.visited[self._victim] = True
+                self._victim = None
+        else:
+            found = None
+        if found is None:
+            frontiers = find_frontiers(ctx.state, self._searched(ctx.box), self._min_cells)
+            c = self.config
+            drop = self._near(ctx, [pose[:2]], c.min_goal_m) | self._near(
+                ctx, self.blacklist, c.blacklist_radius_m
+            )
+            frontiers = frontiers.without(drop)
+            found = self._choose(frontiers, ctx) if frontiers.count else None
+        self.finished = found is None and self._victim is None
+        if found is None:
+            self.follower.clear()
+            self._goal = None
+            return
+        cells = trace_path(found[1], found[0])
+        points = self.map.to_world(cells[:, 0] + ctx.box.r0, cells[:, 1] + ctx.box.c0)
+        goal = (float(points[-1, 0]), float(points[-1, 1]))
+        if self._goal is None or math.dist(goal, self._goal) > self.config.blacklist_radius_m:
+            self._recent.clear()
+        self._goal = goal
+        self.follower.set_path(points)
+
+    def _context(self, pose: tuple[float, float, float]) -> PlanContext:
+        k = self.map.known
+        h, w = self.map.state.shape
+        box = Box(max(k.r0 - 2, 0), min(k.r1 + 2, h), max(k.c0 - 2, 0), min(k.c1 + 2, w))
+        state = self.map.state[box.slices]
+        r, c = self.map.to_cell(pose[0], pose[1])
+        res = self.map.resolution_m
+        clear = clearance(state, res)
+        cost = costmap(state, clear, res, self.spec.robot.radius_m, self.config.cost)
+        todo = unobserved(state, self._searched(box))
+        return PlanContext(box, state, todo, clear, cost, (r - box.r0, c - box.c0), pose, res)
+
+    def _searched(self, box: Box) -> np.ndarray | None:
+        return None if self.map.searched is None else self.map.searched[box.slices]
+
+    def _near(self, ctx: PlanContext, points: list[tuple[float, float]], radius_m: float) -> np.ndarray:
+        """Cells of the planning window within ``radius_m`` of any of ``points`` (square windows)."""
+        out = np.zeros(ctx.state.shape, dtype=bool)
+        k = math.ceil(radius_m / ctx.resolution_m)
+        for x, y in points:
+            r, c = self.map.to_cell(x, y)
+            r, c = r - ctx.box.r0, c - ctx.box.c0
+            out[max(r - k, 0) : max(r + k + 1, 0), max(c - k, 0) : max(c + k + 1, 0)] = True
+        return out
+
+    def _to_victim(self, ctx: PlanContext, xy: np.ndarray) -> tuple[int, np.ndarray] | None:
+        rows, cols = np.indices(ctx.state.shape)
+        centre = self.map.to_world(np.array([ctx.box.r0]), np.array([ctx.box.c0]))[0]
+        d = np.hypot(centre[0] + cols * ctx.resolution_m - xy[0], centre[1] + rows * ctx.resolution_m - xy[1])
+        goals = (d <= self.config.victim_approach_m) & np.isfinite(ctx.cost)
+        _, parent, goal = dijkstra(ctx.cost, ctx.start, goals, first_only=True)
+        return None if goal < 0 else (goal, parent)
+
+    @abstractmethod
+    def _choose(self, frontiers: Frontiers, ctx: PlanContext) -> tuple[int, np.ndarray] | None:
+        """Pick the goal among the frontiers.
+
+        Returns:
+            ``(flat index of the goal cell in the window, parent array of a Dijkstra from the
+            robot)``, or ``None`` if no frontier is reachable.
+        """

@@ -1,0 +1,33 @@
+"""Nearest-frontier exploration (Yamauchi 1997)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from realistic_indoor.agents.explorer import MapExplorer, PlanContext
+from realistic_indoor.agents.frontiers import Frontiers
+from realistic_indoor.agents.planning import dijkstra
+
+__all__ = ["FrontierAgent"]
+
+
+class FrontierAgent(MapExplorer):
+    """Goes to the nearest reachable frontier, by path cost on its own map.
+
+    B. Yamauchi, "A frontier-based approach for autonomous exploration", CIRA 1997: frontiers
+    are the boundaries between known free space and unknown space; the robot repeatedly drives
+    to the closest one. Here "closest" is the cost of the path on the agent's costmap (the
+    robot's radius kept from walls), found by one Dijkstra search that stops at the first
+    frontier cell it settles; frontiers it could not reach are blacklisted (see
+    :class:`~realistic_indoor.agents.explorer.MapExplorer` for the loop and the settings).
+
+    Args:
+        spec: The robot's sensors and limits.
+        config: Explorer settings (:class:`~realistic_indoor.agents.explorer.ExplorerConfig`).
+    """
+
+    name = "frontier"
+
+    def _choose(self, frontiers: Frontiers, ctx: PlanContext) -> tuple[int, np.ndarray] | None:
+        _, parent, goal = dijkstra(ctx.cost, ctx.start, frontiers.mask, first_only=True)
+        return None if goal < 0 else (goal, parent)

@@ -1,0 +1,86 @@
+"""Frontiers (Yamauchi 1997): known free cells next to space the robot has still to observe.
+
+In exploration the space still to observe is the unknown; in victim search it is also the floor
+the laser has mapped but the victim sensor has not swept yet (:attr:`OwnMap.searched`), since a
+victim is found only within the victim sensor's short range. Frontier cells are grouped into
+frontiers by 8-connectivity; frontiers smaller than a minimum are noise and dropped.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from scipy import ndimage
+
+from realistic_indoor.agents.occupancy import FREE_CELL, UNKNOWN_CELL
+
+__all__ = ["Frontiers", "find_frontiers", "unobserved"]
+
+_EIGHT = np.ones((3, 3), dtype=bool)
+
+
+class Frontiers(NamedTuple):
+    """The frontiers of a map.
+
+    Attributes:
+        labels: ``(H, W)`` int32: frontier number (1..count) of each frontier cell, 0 elsewhere.
+        count: Number of frontiers.
+        sizes: ``(count + 1,)`` cells per frontier (entry 0 unused).
+    """
+
+    labels: np.ndarray
+    count: int
+    sizes: np.ndarray
+
+    @property
+    def mask(self) -> np.ndarray:
+        """Frontier cells (bool)."""
+        return self.labels > 0
+
+    def without(self, drop: np.ndarray) -> Frontiers:
+        """The frontiers with the cells of the bool mask ``drop`` removed (emptied ones dropped)."""
+        return _compact(np.where(drop, 0, self.labels), self.count, min_cells=1)
+
+
+def unobserved(state: np.ndarray, searched: np.ndarray | None = None) -> np.ndarray:
+    """Cells still to observe: unknown, or (with ``searched``) free but not yet swept."""
+    todo = state == UNKNOWN_CELL
+    if searched is not None:
+        todo |= (state == FREE_CELL) & ~searched
+    return todo
+
+
+def find_frontiers(state: np.ndarray, searched: np.ndarray | None = None, min_cells: int = 3) -> Frontiers:
+    """The frontiers of a map: observed free cells with a 4-neighbour still to observe.
+
+    Args:
+        state: ``(H, W)`` cells of the agent's map.
+        searched: Floor the victim sensor has swept, for victim search; ``None`` in exploration.
+        min_cells: Frontiers with fewer cells are dropped.
+
+    Returns:
+        The frontiers, numbered in scan order.
+    """
+    todo = unobserved(state, searched)
+    near = np.zeros_like(todo)
+    near[1:] |= todo[:-1]
+    near[:-1] |= todo[1:]
+    near[:, 1:] |= todo[:, :-1]
+    near[:, :-1] |= todo[:, 1:]
+    cells = (state == FREE_CELL) & ~todo & near
+    labels, count = ndimage.label(cells, structure=_EIGHT)
+    return _compact(labels, count, min_cells)
+
+
+def _compact(labels: np.ndarray, count: int, min_cells: int) -> Frontiers:
+    """Drop the frontiers with fewer than ``min_cells`` cells and number the others 1..n."""
+    sizes = np.bincount(labels.ravel(), minlength=count + 1)
+    small = sizes < min_cells
+    small[0] = False
+    if small.any():
+        keep = np.cumsum(~small) - 1
+        keep[small] = 0
+        labels = keep[labels]
+        sizes = np.concatenate([[sizes[0]], sizes[1:][~small[1:]]])
+    return Frontiers(labels.astype(np.int32, copy=False), len(sizes) - 1, sizes)

@@ -1,0 +1,61 @@
+"""Victims the robot has detected: positions in its odometry frame, and which it has visited."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["VictimTracker"]
+
+
+class VictimTracker:
+    """Turns the victim sensor's readings into a list of victims to go to.
+
+    Each reading ``(1, range / sensor_range, bearing / pi)`` of ``obs["victims"]`` becomes a
+    position; readings within ``merge_m`` of a known victim are the same victim.
+
+    Args:
+        sensor_range_m: Range of the victim sensor (m), to undo the observation's scaling.
+        merge_m: Readings this close to a known victim are that victim (m).
+
+    Attributes:
+        positions: ``(N, 2)`` positions of the victims detected so far (m, odometry frame).
+        visited: ``(N,)`` bool: whether the robot has gone to each (or given up on it).
+    """
+
+    def __init__(self, sensor_range_m: float, merge_m: float = 1.0) -> None:
+        self.sensor_range_m = sensor_range_m
+        self.merge_m = merge_m
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget every victim."""
+        self.positions = np.zeros((0, 2))
+        self.visited = np.zeros(0, dtype=bool)
+
+    def observe(self, pose: tuple[float, float, float], reading: np.ndarray) -> int:
+        """Add the victims in ``reading`` (``obs["victims"]``) seen from ``pose``; return how many are new."""
+        rows = np.asarray(reading, dtype=float).reshape(-1, 3)
+        rows = rows[rows[:, 0] > 0.5]
+        x, y, heading = pose
+        new = 0
+        for _, rng, bearing in rows:
+            angle = heading + bearing * math.pi
+            p = np.array(
+                [
+                    x + rng * self.sensor_range_m * math.cos(angle),
+                    y + rng * self.sensor_range_m * math.sin(angle),
+                ]
+            )
+            if len(self.positions) and np.min(np.hypot(*(self.positions - p).T)) < self.merge_m:
+                continue
+            self.positions = np.vstack([self.positions, p])
+            self.visited = np.append(self.visited, False)
+            new += 1
+        return new
+
+    def next_target(self) -> int | None:
+        """Index of the first victim not yet visited, or ``None``."""
+        left = np.flatnonzero(~self.visited)
+        return int(left[0]) if len(left) else None

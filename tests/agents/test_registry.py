@@ -1,0 +1,70 @@
+import gymnasium as gym
+import numpy as np
+import pytest
+from agent_helpers import drive, small_env
+
+from realistic_indoor.agents import AGENTS, RandomAgent, RobotSpec, make_agent
+from realistic_indoor.envs import PRESETS
+from realistic_indoor.errors import ConfigError
+
+MAP_FREE_AGENTS = [name for name in AGENTS if name != "ppo"]
+
+
+@pytest.mark.parametrize("env_id", sorted(PRESETS))
+@pytest.mark.parametrize("name", MAP_FREE_AGENTS)
+def test_every_agent__runs_on_every_registered_id(name, env_id):
+    env = small_env(env_id, max_steps=30)
+    agent = make_agent(name, env)
+    actions, info = drive(env, agent, seed=1)
+    assert (
+        len(actions) == 30
+        or info["coverage"] >= 0.9
+        or info.get("victims_found") == info.get("victims_total")
+    )
+
+
+def test_make_agent__unknown_name_lists_the_valid_ones(hall_office):
+    env = gym.make("OfficeExplore-v0", building=hall_office)
+    with pytest.raises(ConfigError, match=r"unknown agent 'astar'.*frontier"):
+        make_agent("astar", env)
+    with pytest.raises(ConfigError, match=r"ppo:<path/to/model.zip>"):
+        make_agent("ppo", env)
+    with pytest.raises(ConfigError, match="takes no ':' argument"):
+        make_agent("frontier:fast", env)
+
+
+def test_make_agent__needs_an_environment_of_this_package():
+    with pytest.raises(ConfigError, match="realistic_indoor environment"):
+        make_agent("random", gym.make("CartPole-v1"))
+
+
+def test_make_agent__passes_options_and_accepts_a_spec():
+    agent = make_agent("random", RobotSpec(), hold_steps=3, seed=0)
+    assert isinstance(agent, RandomAgent) and agent.hold_steps == 3
+
+
+def test_robot_spec__reads_the_environment(hall_office):
+    env = gym.make("OfficeSearch-v0", building=hall_office, lidar={"n_beams": 61}, action_type="discrete")
+    spec = RobotSpec.from_env(env)
+    assert spec.lidar.n_beams == 61 and len(spec.beam_offsets_rad()) == 61
+    assert spec.victims is not None and spec.action_type == "discrete"
+    assert RobotSpec.from_env(gym.make("OfficeExplore-v0", building=hall_office)).victims is None
+    assert spec.action(1.0, 0.0) == 0  # forward
+    assert spec.action(0.0, -2.0) == 4  # turn right
+
+
+def test_random_agent__seeded_and_held(hall_office):
+    env = gym.make("OfficeExplore-v0", building=hall_office)
+    agent = make_agent("random", env, hold_steps=2)
+    first, _ = drive(env, agent, seed=5, steps=20)
+    second, _ = drive(env, agent, seed=5, steps=20)
+    assert np.array_equal(first, second)
+    assert np.array_equal(first[0], first[1]) and not np.array_equal(first[1], first[2])
+
+
+def test_wall_follower__explores_along_the_walls_without_crashing(hall_office):
+    env = gym.make("OfficeExplore-v0", building=hall_office, max_steps=400, max_episode_steps=400)
+    agent = make_agent("wall", env)
+    _, info = drive(env, agent)
+    assert info["coverage"] >= 0.9
+    assert info["collisions"] <= 5

@@ -49,6 +49,7 @@ AGENTS: dict[str, str] = {
     "wall": "realistic_indoor.agents.wall_follower:WallFollower",
     "frontier": "realistic_indoor.agents.frontier:FrontierAgent",
     "utility": "realistic_indoor.agents.utility:UtilityFrontierAgent",
+    "structure": "realistic_indoor.agents.structure:StructureAgent",
     "ppo": "realistic_indoor.agents.rl.agent:PPOAgent",
 }
 """Agent names and their ``module:Class``; ``ppo`` needs a model: ``"ppo:path/to/model.zip"``."""

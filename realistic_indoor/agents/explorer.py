@@ -31,10 +31,12 @@ __all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
 
 _BACKUP_STEPS, _BACKUP_SPEED = 3, 0.3
 """A stuck robot backs up this many steps at this share of its top speed, then replans."""
-_CONTACT_STEPS = 8
-"""A robot in contact with a wall for this many steps in a row is stuck."""
-_EXPLAINED_M = 0.15
-"""A collision is explained by a wall the laser sees within this distance of the robot's disc (m)."""
+_JAM_STEPS, _MAX_RECOVERIES = 5, 3
+"""A robot touching a wall, or blocked right ahead, this many steps in a row backs up and replans;
+after this many such recoveries on the way to one goal, the goal is blacklisted."""
+_EXPLAINED_M, _MIN_BUMP_SPEED_M_S = 0.1, 0.1
+"""A collision is explained by a wall the laser sees this close ahead of the robot's disc (m); a
+robot slower than this (m/s) is not told apart from one stopped by an obstacle."""
 
 
 @dataclass(frozen=True)
@@ -48,7 +50,8 @@ class ExplorerConfig:
         replan_new_m2: Newly mapped area that makes a periodic replan worth it (m2).
         stuck_steps: A robot that moved less than ``stuck_move_m`` in this many steps while
             heading for the same goal is stuck: the goal is blacklisted, and the robot backs
-            up a little. So is a robot that touched a wall while driving 8 steps in a row.
+            up a little. A robot touching a wall or blocked right ahead 5 steps in a row backs
+            up and replans; the third time on the way to one goal, the goal is blacklisted.
         stuck_move_m: See ``stuck_steps`` (m).
         blacklist_radius_m: Frontier cells this close to a blacklisted goal are ignored (m).
         goal_still_open_m: A goal stays valid while unobserved cells lie this close to it (m).
@@ -56,7 +59,7 @@ class ExplorerConfig:
             blind sector behind the robot would otherwise make its own cell a frontier.
         victim_approach_m: In victim search, the robot goes this close to each victim it
             detects (m); ``None`` ignores detected victims.
-        bump_half_width_m: A collision the laser does not explain (nothing seen within 0.15 m
+        bump_half_width_m: A collision the laser does not explain (nothing seen within 0.1 m
             of the robot: the invisible line across an entrance) marks a wall across the robot's
             front, this much wider than the robot on each side (m).
         cost: Costmap weights.
@@ -163,7 +166,8 @@ class MapExplorer(Agent):
         self._last_v = 0.0
         self._last_pose: tuple[float, float, float] | None = None
         self._backing = 0
-        self._contact = 0
+        self._jam = 0
+        self._recoveries = 0
         self._recent: deque[tuple[float, float]] = deque(maxlen=self.config.stuck_steps)
 
     # -- the loop ----------------------------------------------------------------------------------------
@@ -180,6 +184,9 @@ class MapExplorer(Agent):
         if self._backing > 0:
             self._backing -= 1
             v, w = -_BACKUP_SPEED * self.spec.robot.max_speed_m_s, 0.0
+        elif self._jam >= _JAM_STEPS:
+            self._recover()
+            v, w = 0.0, 0.0
         elif self._stuck():
             self._give_up()
             v, w = 0.0, 0.0
@@ -187,6 +194,7 @@ class MapExplorer(Agent):
             if collided or self._needs_plan(pose):
                 self._plan(pose)
             v, w = self.follower.command(pose, self._clearance_ahead(ranges))
+        self._jam = self._jam + 1 if collided or self.follower.blocked else 0
         self._last_v = v
         self._last_pose = pose
         return self.spec.action(v, w)
@@ -197,13 +205,12 @@ class MapExplorer(Agent):
         """Whether the robot touched a wall during the last step.
 
         A contact that stopped the robot while it drove forward, with no wall in the laser's
-        view near it, is an obstacle the laser cannot see (the line across an entrance): it is
-        marked on the map, across the direction the robot was driving.
+        view just ahead of it, is an obstacle the laser cannot see (the line across an
+        entrance): it is marked on the map, across the direction the robot was driving.
         """
         count = int(info.get("collisions", 0))
         hit = count > self._collisions
         self._collisions = count
-        self._contact = self._contact + 1 if hit and self._last_v > 0.0 else 0
         if hit and self._last_pose is not None and self._unexplained(pose, ranges, speed_m_s):
             r = self.spec.robot.radius_m
             self.map.mark_blocked(
@@ -212,13 +219,12 @@ class MapExplorer(Agent):
         return hit
 
     def _unexplained(self, pose: tuple[float, float, float], ranges: np.ndarray, speed_m_s: float) -> bool:
-        """Whether the robot, driving forward, went less than half the way, with no wall seen near."""
-        expected = speed_m_s * self.spec.dt_s
-        if speed_m_s < 0.5 * self.spec.robot.max_speed_m_s:
+        """Whether the robot, driving forward, went less than half the way with nothing seen ahead."""
+        if speed_m_s < _MIN_BUMP_SPEED_M_S:
             return False
         x0, y0, heading = self._last_pose
         forward = (pose[0] - x0) * math.cos(heading) + (pose[1] - y0) * math.sin(heading)
-        return forward < 0.5 * expected and float(np.min(ranges)) > self.spec.robot.radius_m + _EXPLAINED_M
+        return forward < 0.5 * speed_m_s * self.spec.dt_s and self._clearance_ahead(ranges) > _EXPLAINED_M
 
     def _clearance_ahead(self, ranges: np.ndarray) -> float:
         """Free distance in front of the robot's disc along its heading (m), from the scan."""
@@ -247,8 +253,6 @@ class MapExplorer(Agent):
         return self._since_plan >= c.replan_steps and grown
 
     def _stuck(self) -> bool:
-        if self._contact >= _CONTACT_STEPS:
-            return True
         if len(self._recent) < self._recent.maxlen:
             return False
         (x0, y0), (x1, y1) = self._recent[0], self._recent[-1]
@@ -259,9 +263,17 @@ class MapExplorer(Agent):
             self.victims.visited[self._victim] = True
         elif self._goal is not None:
             self.blacklist.append(self._goal)
-        self.follower.clear()
+        self._recover()
         self._recent.clear()
-        self._contact = 0
+
+    def _recover(self) -> None:
+        """Back up a little and replan; a goal that needed this too often is given up."""
+        self._recoveries += 1
+        if self._recoveries > _MAX_RECOVERIES and self._victim is None and self._goal is not None:
+            self.blacklist.append(self._goal)
+            self._recoveries = 0
+        self.follower.clear()
+        self._jam = 0
         self._backing = _BACKUP_STEPS
 
     def _goal_open(self) -> bool:
@@ -311,6 +323,7 @@ class MapExplorer(Agent):
         goal = (float(points[-1, 0]), float(points[-1, 1]))
         if self._goal is None or math.dist(goal, self._goal) > self.config.blacklist_radius_m:
             self._recent.clear()
+            self._recoveries = 0
         self._goal = goal
         self.follower.set_path(points)
 

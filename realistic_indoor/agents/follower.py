@@ -57,6 +57,8 @@ class PathFollower:
 
     Attributes:
         path: ``(N, 2)`` points (m) being followed; empty when there is none.
+        blocked: Whether the last command wanted to drive on but an obstacle right ahead
+            stopped it.
     """
 
     def __init__(
@@ -66,6 +68,7 @@ class PathFollower:
         self.w_max = max_turn_rad_s
         self.config = config or FollowerConfig()
         self.path = np.zeros((0, 2))
+        self.blocked = False
         self._progress = 0
 
     def set_path(self, points: np.ndarray) -> None:
@@ -95,6 +98,7 @@ class PathFollower:
             pose: The robot's pose (m, m, rad).
             clearance_ahead_m: Free distance ahead of the robot's front (m), from the laser.
         """
+        self.blocked = False
         if self.done(pose):
             return 0.0, 0.0
         x, y, heading = pose
@@ -107,6 +111,7 @@ class PathFollower:
         to_end = math.dist((x, y), self.path[-1])
         near_end = max(_MIN_SPEED_SHARE, min(1.0, to_end / c.slow_radius_m))
         near_obstacle = min(1.0, max(0.0, (clearance_ahead_m - _STOP_M) / c.slow_radius_m))
+        self.blocked = near_obstacle == 0.0
         return self.v_max * math.cos(error) * min(near_end, near_obstacle), w
 
     def _lookahead(self, x: float, y: float) -> np.ndarray:

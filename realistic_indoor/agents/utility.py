@@ -100,9 +100,10 @@ class UtilityFrontierAgent(MapExplorer):
             return frontiers.sizes[1:] * res
         k = max(1, round(self.utility.gain_radius_m / res))
         area = ndimage.uniform_filter(ctx.todo.astype(np.float32), size=2 * k + 1, mode="constant")
-        index = np.arange(1, frontiers.count + 1)
-        best = np.asarray(ndimage.maximum(area, frontiers.labels, index), dtype=float).reshape(-1)
-        return best * (2 * k + 1) ** 2 * res**2
+        rows, cols = np.nonzero(frontiers.mask)
+        best = np.zeros(frontiers.count + 1)
+        np.maximum.at(best, frontiers.labels[rows, cols], area[rows, cols])
+        return best[1:] * (2 * k + 1) ** 2 * res**2
 
 
 def frontier_costs(
@@ -122,10 +123,15 @@ def frontier_costs(
         unreachable), and the Dijkstra parent array for :func:`trace_path`.
     """
     dist, parent, _ = dijkstra(ctx.cost, ctx.start, frontiers.mask, False, max_cost_m / ctx.resolution_m)
-    index = np.arange(1, frontiers.count + 1)
-    costs = np.asarray(ndimage.minimum(dist, frontiers.labels, index), dtype=float).reshape(-1)
-    where = ndimage.minimum_position(dist, frontiers.labels, index)
-    w = dist.shape[1]
-    cells = np.array([r * w + c for r, c in where], dtype=np.int64).reshape(-1)
-    cells[~np.isfinite(costs)] = -1
+    flat = np.flatnonzero(frontiers.mask)
+    d = dist.ravel()[flat]
+    lab = frontiers.labels.ravel()[flat]
+    order = np.lexsort((d, lab))
+    first = order[np.r_[True, np.diff(lab[order]) != 0]]  # the nearest cell of each frontier
+    costs = np.full(frontiers.count, np.inf)
+    cells = np.full(frontiers.count, -1, dtype=np.int64)
+    costs[lab[first] - 1] = d[first]
+    reached = np.isfinite(costs)
+    cells[lab[first] - 1] = flat[first]
+    cells[~reached] = -1
     return costs * ctx.resolution_m, cells, parent

@@ -1,0 +1,198 @@
+"""One episode of an agent in an environment, and the metrics it yields."""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.evaluation.tasks import EpisodeTask, make_env
+
+__all__ = ["SCALARS", "EpisodeResult", "run_episode"]
+
+SCALARS = (
+    "steps",
+    "final_coverage",
+    "reached_target",
+    "time_to_target_s",
+    "path_to_target_m",
+    "path_length_m",
+    "collisions",
+    "episode_return",
+    "victims_total",
+    "victims_found",
+    "time_to_first_victim_s",
+    "time_to_all_victims_s",
+    "agent_ms_per_step",
+)
+"""The per-episode numbers (``NaN`` where they do not apply), in the order outputs list them."""
+
+
+@dataclass
+class EpisodeResult:
+    """What one episode measured.
+
+    Attributes:
+        agent: Agent name.
+        env: Environment label (the id, or ``id:plan``).
+        group: Environment group (the id, or ``id:folder``).
+        seed: The episode's seed.
+        steps: Control steps taken.
+        dt_s: Duration of a control step (s).
+        final_coverage: Share of the reachable floor observed at the end.
+        reached_target: 1 if the coverage reached the task's target (0.9), else 0.
+        time_to_target_s: Time at which it did (s); ``NaN`` if it did not.
+        path_to_target_m: Distance driven until then (m); ``NaN`` if it did not.
+        path_length_m: Distance driven in the episode (m).
+        collisions: Steps with a wall contact.
+        episode_return: Sum of the rewards.
+        victims_total: Victims in the building (0 in exploration).
+        victims_found: Victims found.
+        time_to_first_victim_s: Time the first victim was found (s); ``NaN`` if none was.
+        time_to_all_victims_s: Time the last one was (s); ``NaN`` unless all were.
+        victim_times_s: Time each found victim was found, in order (s).
+        agent_ms_per_step: The agent's thinking time per step (ms, wall clock).
+        coverage_t: Coverage every ``curve_every_steps`` steps, from the start.
+        curve_dt_s: Time between entries of ``coverage_t`` (s).
+        coverage_d: Coverage every ``curve_every_m`` metres driven, from the start.
+        curve_dd_m: Distance between entries of ``coverage_d`` (m).
+    """
+
+    agent: str
+    env: str
+    group: str
+    seed: int
+    steps: int
+    dt_s: float
+    final_coverage: float
+    reached_target: int
+    time_to_target_s: float
+    path_to_target_m: float
+    path_length_m: float
+    collisions: int
+    episode_return: float
+    victims_total: int
+    victims_found: int
+    time_to_first_victim_s: float
+    time_to_all_victims_s: float
+    victim_times_s: list[float] = field(default_factory=list)
+    agent_ms_per_step: float = math.nan
+    coverage_t: list[float] = field(default_factory=list)
+    curve_dt_s: float = 0.0
+    coverage_d: list[float] = field(default_factory=list)
+    curve_dd_m: float = 0.0
+
+    def to_dict(self) -> dict[str, Any]:
+        """The result as plain JSON-ready values."""
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> EpisodeResult:
+        """The inverse of :meth:`to_dict`."""
+        return cls(**data)
+
+
+def run_episode(task: EpisodeTask) -> EpisodeResult:
+    """Run one episode and measure it.
+
+    The agent is built for the environment's robot (:func:`~realistic_indoor.agents.make_agent`)
+    and sees only observations and ``info``; the metrics come from ``info`` after each step.
+
+    Raises:
+        ConfigError: For an unknown agent or a bad environment argument.
+        PlanFormatError: If the environment's plan cannot be read.
+    """
+    from realistic_indoor.agents import make_agent
+
+    env = make_env(task.env)
+    try:
+        agent = make_agent(task.agent, env)
+        obs, info = env.reset(seed=task.seed)
+        agent.reset(seed=task.seed)
+        log = _Log(info)
+        thinking = 0.0
+        done = False
+        while not done:
+            t0 = time.perf_counter()
+            action = agent.act(obs, info)
+            thinking += time.perf_counter() - t0
+            obs, reward, terminated, truncated, info = env.step(action)
+            log.add(info, float(reward))
+            done = terminated or truncated
+        dt_s = 1.0 / env.unwrapped.config.robot.control_hz
+    finally:
+        env.close()
+    return log.result(task, dt_s, thinking)
+
+
+class _Log:
+    """Per-step coverage, distance, victims and reward of an episode."""
+
+    def __init__(self, info: dict[str, Any]) -> None:
+        self.coverage = [float(info["coverage"])]
+        self.path = [float(info["path_length_m"])]
+        self.found = [int(info.get("victims_found", 0))]
+        self.victims_total = int(info.get("victims_total", 0))
+        self.collisions = 0
+        self.reward = 0.0
+
+    def add(self, info: dict[str, Any], reward: float) -> None:
+        self.coverage.append(float(info["coverage"]))
+        self.path.append(float(info["path_length_m"]))
+        self.found.append(int(info.get("victims_found", 0)))
+        self.collisions = int(info["collisions"])
+        self.reward += reward
+
+    def result(self, task: EpisodeTask, dt_s: float, thinking_s: float) -> EpisodeResult:
+        coverage = np.array(self.coverage)
+        path = np.array(self.path)
+        steps = len(coverage) - 1
+        hit = np.flatnonzero(coverage >= task.target)
+        victim_steps = _first_steps(np.array(self.found))
+        times = [round(s * dt_s, 6) for s in victim_steps]
+        nan = math.nan
+        return EpisodeResult(
+            agent=task.agent,
+            env=task.env.label,
+            group=task.env.group,
+            seed=task.seed,
+            steps=steps,
+            dt_s=dt_s,
+            final_coverage=float(coverage[-1]),
+            reached_target=int(len(hit) > 0),
+            time_to_target_s=float(hit[0] * dt_s) if len(hit) else nan,
+            path_to_target_m=float(path[hit[0]]) if len(hit) else nan,
+            path_length_m=float(path[-1]),
+            collisions=self.collisions,
+            episode_return=self.reward,
+            victims_total=self.victims_total,
+            victims_found=int(self.found[-1]),
+            time_to_first_victim_s=times[0] if times else nan,
+            time_to_all_victims_s=times[-1] if times and self.found[-1] == self.victims_total else nan,
+            victim_times_s=times,
+            agent_ms_per_step=1000.0 * thinking_s / max(steps, 1),
+            coverage_t=[round(float(c), 5) for c in coverage[:: task.curve_every_steps]],
+            curve_dt_s=task.curve_every_steps * dt_s,
+            coverage_d=_by_distance(coverage, path, task.curve_every_m),
+            curve_dd_m=task.curve_every_m,
+        )
+
+
+def _first_steps(found: np.ndarray) -> list[int]:
+    """The step at which each victim was found (a victim counts at the step the count rose)."""
+    rises = np.diff(found, prepend=found[0] if len(found) else 0)
+    steps: list[int] = []
+    for step in np.flatnonzero(rises > 0):
+        steps += [int(step)] * int(rises[step])
+    victims_at_start = int(found[0]) if len(found) else 0
+    return [0] * victims_at_start + steps
+
+
+def _by_distance(coverage: np.ndarray, path: np.ndarray, every_m: float) -> list[float]:
+    """Coverage when the distance driven first reached 0, ``every_m``, 2 ``every_m``, ... m."""
+    marks = np.arange(0.0, path[-1] + 1e-9, every_m)
+    idx = np.searchsorted(path, marks, side="left")
+    return [round(float(c), 5) for c in coverage[np.minimum(idx, len(coverage) - 1)]]

@@ -1,0 +1,69 @@
+"""Figures of an evaluation: mean coverage curves per agent, one panel per environment group."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from realistic_indoor.evaluation.aggregate import group_results, mean_curve
+from realistic_indoor.evaluation.episode import EpisodeResult
+
+__all__ = ["plot_coverage"]
+
+_AXES = {
+    "time": ("coverage_t", "curve_dt_s", "time (s)"),
+    "distance": ("coverage_d", "curve_dd_m", "distance driven (m)"),
+}
+
+
+def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "time") -> Path:
+    """Draw mean coverage against time or distance, with 95% bootstrap bands, and save it.
+
+    One panel per environment group, one line per agent. Episodes that ended early are held at
+    their final coverage.
+
+    Args:
+        results: Episode results.
+        path: Image file to write (PNG, SVG or PDF by its ending).
+        x: ``"time"`` or ``"distance"``.
+
+    Returns:
+        The path written.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    curve_field, step_field, label = _AXES[x]
+    groups = list(dict.fromkeys(r.group for r in results))
+    cols = min(3, len(groups))
+    rows = math.ceil(len(groups) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(4.5 * cols, 3.4 * rows), squeeze=False, sharey=True)
+    by_agent_group = group_results(results, ("group", "agent"))
+    for ax, group in zip(axes.flat, groups, strict=False):
+        for (g, agent), episodes in by_agent_group.items():
+            if g != group:
+                continue
+            mean, low, high = mean_curve([getattr(e, curve_field) for e in episodes])
+            t = np.arange(len(mean)) * getattr(episodes[0], step_field)
+            (line,) = ax.plot(t, mean, label=f"{agent} (n={len(episodes)})", lw=1.5)
+            ax.fill_between(t, low, high, color=line.get_color(), alpha=0.2, lw=0)
+        ax.set_title(group, fontsize=9)
+        ax.set_xlabel(label)
+        ax.set_ylim(0, 1)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, loc="lower right")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("coverage")
+    for ax in list(axes.flat)[len(groups) :]:
+        ax.set_visible(False)
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path

@@ -1,0 +1,149 @@
+"""What an evaluation runs: environments (registered ids, possibly on fixed plans) and episodes."""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from realistic_indoor.errors import ConfigError
+
+__all__ = ["PLAN_SUFFIXES", "EnvSpec", "EpisodeTask", "make_env", "make_tasks", "parse_envs"]
+
+PLAN_SUFFIXES = (".xml", ".json")
+"""Files taken as plans when an environment names a folder."""
+
+
+@dataclass(frozen=True)
+class EnvSpec:
+    """One environment of an evaluation.
+
+    Attributes:
+        env_id: A registered id (``OfficeExplore-v0``, ...).
+        plan: A plan file run as the fixed building of every episode (read with entrances
+            inferred, as real plans have none); ``None`` for the id's generator.
+        kwargs: More keyword arguments of ``gym.make`` (``area_m2``, ``max_steps``, ...).
+        label: Name of this environment in results (the id, or ``id:plan-stem``).
+        group: Name of the set it belongs to in summaries (the id, or ``id:folder``).
+    """
+
+    env_id: str
+    plan: str | None = None
+    kwargs: dict[str, Any] = field(default_factory=dict)
+    label: str = ""
+    group: str = ""
+
+    def __post_init__(self) -> None:
+        stem = None if self.plan is None else Path(self.plan).stem
+        if not self.label:
+            object.__setattr__(self, "label", self.env_id if stem is None else f"{self.env_id}:{stem}")
+        if not self.group:
+            object.__setattr__(self, "group", self.label)
+
+
+@dataclass(frozen=True)
+class EpisodeTask:
+    """One episode: an agent in an environment with a seed.
+
+    Attributes:
+        agent: Agent name (see :func:`realistic_indoor.agents.make_agent`).
+        env: The environment.
+        seed: Seed of ``env.reset`` and of the agent.
+        curve_every_steps: Coverage is recorded every this many steps.
+        curve_every_m: ... and every this many metres driven.
+        target: Coverage whose first crossing is timed (``time_to_target_s``).
+    """
+
+    agent: str
+    env: EnvSpec
+    seed: int
+    curve_every_steps: int = 10
+    curve_every_m: float = 2.0
+    target: float = 0.9
+
+
+def parse_envs(tokens: list[str], kwargs: dict[str, Any] | None = None) -> list[EnvSpec]:
+    """Environments from ``ID`` or ``ID:PLAN`` tokens, where ``PLAN`` is a plan file or a folder.
+
+    A folder gives one environment per plan file in it (sorted), grouped as ``ID:folder``.
+
+    Args:
+        tokens: E.g. ``["OfficeExplore-v0", "OfficeExplore-v0:../shared/data/real_floorplans/office"]``.
+        kwargs: Keyword arguments of ``gym.make`` for every environment.
+
+    Raises:
+        ConfigError: For an unknown id or a plan path that does not exist.
+    """
+    from realistic_indoor.envs import PRESETS
+
+    specs = []
+    for token in tokens:
+        env_id, _, plan = token.strip().partition(":")
+        if env_id not in PRESETS:
+            raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
+        if not plan:
+            specs.append(EnvSpec(env_id, None, dict(kwargs or {})))
+            continue
+        path = Path(plan)
+        if path.is_dir():
+            files = sorted(p for p in path.iterdir() if p.suffix.lower() in PLAN_SUFFIXES)
+            if not files:
+                raise ConfigError(f"no plan files ({', '.join(PLAN_SUFFIXES)}) in folder {plan!r}")
+            group = f"{env_id}:{path.name}"
+            specs += [EnvSpec(env_id, str(f), dict(kwargs or {}), group=group) for f in files]
+        elif path.is_file():
+            specs.append(EnvSpec(env_id, str(path), dict(kwargs or {})))
+        else:
+            raise ConfigError(f"plan {plan!r} of {token!r} is neither a file nor a folder")
+    return specs
+
+
+def make_tasks(
+    agents: list[str], envs: list[EnvSpec], episodes: int, seed: int = 0, **options: Any
+) -> list[EpisodeTask]:
+    """Every agent in every environment for ``episodes`` seeds (``seed``, ``seed + 1``, ...).
+
+    All agents meet the same seeds, hence the same buildings: comparisons are paired.
+
+    Raises:
+        ConfigError: If there is no agent, no environment, or fewer than one episode.
+    """
+    if not agents or not envs:
+        raise ConfigError("an evaluation needs at least one agent and one environment")
+    if isinstance(episodes, bool) or not isinstance(episodes, int) or episodes < 1:
+        raise ConfigError(f"episodes must be an integer >= 1, got {episodes!r}")
+    return [EpisodeTask(a, e, seed + i, **options) for a in agents for e in envs for i in range(episodes)]
+
+
+def make_env(spec: EnvSpec) -> Any:
+    """``gym.make`` of an environment spec; a plan is loaded once per process and reused.
+
+    Raises:
+        PlanFormatError: If the plan cannot be read.
+        ConfigError: If a keyword argument is invalid.
+    """
+    import gymnasium as gym
+
+    import realistic_indoor.envs  # noqa: F401 - registers the ids
+
+    kwargs = dict(spec.kwargs)
+    if "max_steps" in kwargs:
+        kwargs.setdefault("max_episode_steps", kwargs["max_steps"])
+    if spec.plan is not None:
+        kwargs["building"] = _load_plan(spec.plan)
+    return gym.make(spec.env_id, **kwargs)
+
+
+@functools.lru_cache(maxsize=64)
+def _load_plan(path: str) -> Any:
+    """A plan; floor-plan XML (real plans, without exterior doors) gets its entrances inferred."""
+    from realistic_indoor.io import load
+    from realistic_indoor.io.registry import format_of
+
+    if format_of(path) == "floorplan":
+        try:
+            return load(path, infer_entrances=True)
+        except TypeError:  # a World Generator file named .xml: its reader has no such option
+            return load(path)
+    return load(path)

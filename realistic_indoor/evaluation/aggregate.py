@@ -23,6 +23,7 @@ __all__ = [
 ]
 
 SUMMARY_METRICS = (
+    "coverage_auc",
     "final_coverage",
     "reached_target",
     "time_to_target_s",

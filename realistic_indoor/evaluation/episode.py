@@ -15,7 +15,9 @@ __all__ = ["SCALARS", "EpisodeResult", "run_episode"]
 
 SCALARS = (
     "steps",
+    "max_steps",
     "final_coverage",
+    "coverage_auc",
     "reached_target",
     "time_to_target_s",
     "path_to_target_m",
@@ -41,8 +43,12 @@ class EpisodeResult:
         group: Environment group (the id, or ``id:folder``).
         seed: The episode's seed.
         steps: Control steps taken.
+        max_steps: The environment's step limit.
         dt_s: Duration of a control step (s).
         final_coverage: Share of the reachable floor observed at the end.
+        coverage_auc: Mean coverage over the whole step limit, an episode that ended early
+            held at its final coverage: the area under the coverage-time curve, in ``[0, 1]``.
+            It rewards exploring fast, and still ranks agents that all reach the target.
         reached_target: 1 if the coverage reached the task's target (0.9), else 0.
         time_to_target_s: Time at which it did (s); ``NaN`` if it did not.
         path_to_target_m: Distance driven until then (m); ``NaN`` if it did not.
@@ -66,8 +72,10 @@ class EpisodeResult:
     group: str
     seed: int
     steps: int
+    max_steps: int
     dt_s: float
     final_coverage: float
+    coverage_auc: float
     reached_target: int
     time_to_target_s: float
     path_to_target_m: float
@@ -122,10 +130,10 @@ def run_episode(task: EpisodeTask) -> EpisodeResult:
             obs, reward, terminated, truncated, info = env.step(action)
             log.add(info, float(reward))
             done = terminated or truncated
-        dt_s = 1.0 / env.unwrapped.config.robot.control_hz
+        config = env.unwrapped.config
     finally:
         env.close()
-    return log.result(task, dt_s, thinking)
+    return log.result(task, 1.0 / config.robot.control_hz, config.max_steps, thinking)
 
 
 class _Log:
@@ -146,7 +154,7 @@ class _Log:
         self.collisions = int(info["collisions"])
         self.reward += reward
 
-    def result(self, task: EpisodeTask, dt_s: float, thinking_s: float) -> EpisodeResult:
+    def result(self, task: EpisodeTask, dt_s: float, max_steps: int, thinking_s: float) -> EpisodeResult:
         coverage = np.array(self.coverage)
         path = np.array(self.path)
         steps = len(coverage) - 1
@@ -160,8 +168,10 @@ class _Log:
             group=task.env.group,
             seed=task.seed,
             steps=steps,
+            max_steps=max_steps,
             dt_s=dt_s,
             final_coverage=float(coverage[-1]),
+            coverage_auc=_auc(coverage, max_steps),
             reached_target=int(len(hit) > 0),
             time_to_target_s=float(hit[0] * dt_s) if len(hit) else nan,
             path_to_target_m=float(path[hit[0]]) if len(hit) else nan,
@@ -179,6 +189,12 @@ class _Log:
             coverage_d=_by_distance(coverage, path, task.curve_every_m),
             curve_dd_m=task.curve_every_m,
         )
+
+
+def _auc(coverage: np.ndarray, max_steps: int) -> float:
+    """Mean coverage over steps 0..max_steps, held at the last value after the episode ended."""
+    held = coverage[-1] * max(0, max_steps + 1 - len(coverage))
+    return float((coverage[: max_steps + 1].sum() + held) / (max_steps + 1))
 
 
 def _first_steps(found: np.ndarray) -> list[int]:

@@ -19,6 +19,15 @@ def test_run_episode__metrics_agree_with_the_episode(small_office):
     assert len(r.coverage_d) == math.floor(r.path_length_m) + 1
     assert np.all(np.diff(r.coverage_d) >= 0) and r.coverage_d[-1] <= r.final_coverage
     assert r.agent_ms_per_step > 0
+    assert r.max_steps == 400
+    assert 0 < r.coverage_auc < r.final_coverage
+
+
+def test_coverage_auc__holds_the_final_coverage_to_the_step_limit():
+    from realistic_indoor.evaluation.episode import _auc
+
+    assert _auc(np.array([0.0, 0.5, 1.0]), 2) == pytest.approx(0.5)
+    assert _auc(np.array([0.0, 1.0]), 3) == pytest.approx(3 / 4)  # 0, 1, then held at 1 twice
 
 
 def test_run_episode__victim_times(small_office):
@@ -35,4 +44,5 @@ def test_run_episode__unreached_target_gives_nan(small_office):
     env = EnvSpec("OfficeExplore-v0", kwargs={"building": small_office, "max_steps": 20})
     r = run_episode(EpisodeTask("random", env, seed=0))
     assert r.steps == 20 and r.reached_target == 0
+    assert r.coverage_auc <= r.final_coverage
     assert math.isnan(r.time_to_target_s) and math.isnan(r.path_to_target_m)

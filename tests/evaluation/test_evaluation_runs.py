@@ -73,7 +73,9 @@ def test_evaluate__writes_csv_json_and_figures(tmp_path, plan_dir):
     summary = json.loads((tmp_path / "results.json").read_text())["summary"]
     assert {(row["agent"], row["episodes"]) for row in summary} == {("frontier", 4), ("random", 4)}
     lines = (tmp_path / "episodes.csv").read_text().splitlines()
-    assert len(lines) == 9 and lines[0].startswith("agent,env,group,seed,steps,final_coverage")
+    assert len(lines) == 9 and lines[0].startswith(
+        "agent,env,group,seed,steps,max_steps,final_coverage,coverage_auc"
+    )
 
 
 def test_cli_evaluate__prints_a_summary(tmp_path, plan_dir, capsys):

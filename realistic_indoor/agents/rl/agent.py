@@ -1,0 +1,90 @@
+"""A trained PPO policy behind the agent interface."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.agents.base import Agent, RobotSpec
+from realistic_indoor.errors import ConfigError
+
+__all__ = ["PPOAgent", "load_model"]
+
+_MODELS: dict[str, Any] = {}
+
+
+def load_model(path: str | Path) -> Any:
+    """A saved stable-baselines3 PPO model, loaded once per process (CPU, one torch thread).
+
+    Raises:
+        ConfigError: If the file is missing or stable-baselines3 / torch are not installed.
+    """
+    from realistic_indoor.agents.rl.train import require_rl
+
+    key = str(Path(path).resolve())
+    if key not in _MODELS:
+        if not Path(path).is_file():
+            raise ConfigError(f"PPO model {str(path)!r} not found (train one with experiments/train_ppo.py)")
+        torch, sb3 = require_rl()
+        torch.set_num_threads(1)
+        _MODELS[key] = sb3.PPO.load(path, device="cpu")
+    return _MODELS[key]
+
+
+class PPOAgent(Agent):
+    """Acts with a trained PPO policy (stable-baselines3), greedily by default.
+
+    The policy reads the observation keys it was trained on (a subset of the environment's)
+    and its own action type: a discrete policy in a continuous environment sends the velocity of
+    the chosen action, a continuous one in a discrete environment the nearest action.
+
+    Args:
+        spec: The robot's sensors and limits.
+        model: Path of a saved model (``.zip``), or a loaded model.
+        deterministic: Take the most likely action (else sample from the policy).
+
+    Raises:
+        ConfigError: If the model cannot be loaded.
+    """
+
+    name = "ppo"
+
+    def __init__(self, spec: RobotSpec, model: str | Path | Any, deterministic: bool = True) -> None:
+        super().__init__(spec)
+        self.model = load_model(model) if isinstance(model, (str, Path)) else model
+        self.source = str(model) if isinstance(model, (str, Path)) else type(model).__name__
+        self.deterministic = deterministic
+        self._keys = list(self.model.observation_space.spaces)
+        self._discrete = hasattr(self.model.action_space, "n")
+
+    def act(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> np.ndarray | int:
+        """The policy's action for ``obs``, in the environment's action space."""
+        missing = [k for k in self._keys if k not in obs]
+        if missing:
+            raise ConfigError(f"the PPO model reads observation keys {missing} that this environment lacks")
+        part = {k: obs[k] for k in self._keys}
+        for k, space in self.model.observation_space.spaces.items():
+            if part[k].shape != space.shape:
+                raise ConfigError(
+                    f"the PPO model expects {k!r} of shape {space.shape}, the environment gives {part[k].shape}; "
+                    "use the sensor settings it was trained with"
+                )
+        action, _ = self.model.predict(part, deterministic=self.deterministic)
+        return self._convert(action)
+
+    def _convert(self, action: np.ndarray) -> np.ndarray | int:
+        r = self.spec.robot
+        if self._discrete:
+            if self.spec.action_type == "discrete":
+                return int(action)
+            from realistic_indoor.envs.actions import DISCRETE_ACTIONS
+
+            _, v, w = DISCRETE_ACTIONS[int(action)]
+            return self.spec.action(v * r.max_speed_m_s, w * r.max_turn_rate_rad_s)
+        a = np.clip(np.asarray(action, dtype=float).ravel(), -1.0, 1.0)
+        return self.spec.action(a[0] * r.max_speed_m_s, a[1] * r.max_turn_rate_rad_s)
+
+    def __repr__(self) -> str:
+        return f"PPOAgent({self.source!r})"

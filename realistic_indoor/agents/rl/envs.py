@@ -1,0 +1,58 @@
+"""Training environments for PPO: a mix of ids, vectorised, observations filtered to the policy's keys."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from realistic_indoor.agents.rl.config import PPOConfig
+
+__all__ = ["EnvFactory", "env_factories", "make_vec_env"]
+
+
+class EnvFactory:
+    """Builds one training environment (picklable, for sub-process vector environments).
+
+    Args:
+        env_id: The registered id.
+        config: The training run (area per building type, step limit, action type, keys).
+    """
+
+    def __init__(self, env_id: str, config: PPOConfig) -> None:
+        from realistic_indoor.envs import PRESETS
+
+        self.env_id = env_id
+        building_type = PRESETS[env_id].kwargs["building_type"]
+        self.kwargs: dict[str, Any] = {"max_steps": config.max_steps, "max_episode_steps": config.max_steps}
+        if building_type in config.areas_m2:
+            self.kwargs["area_m2"] = config.areas_m2[building_type]
+        self.kwargs["action_type"] = config.action_type
+        self.keys = tuple(config.obs_keys) + (("victims",) if "Search" in env_id else ())
+
+    def __call__(self) -> Any:
+        """A new environment: the id with the training settings, filtered keys, a Monitor."""
+        import gymnasium as gym
+        from gymnasium.wrappers import FilterObservation
+        from stable_baselines3.common.monitor import Monitor
+
+        import realistic_indoor.envs  # noqa: F401 - registers the ids
+
+        env = FilterObservation(gym.make(self.env_id, **self.kwargs), list(self.keys))
+        return Monitor(env, info_keywords=("coverage",))
+
+
+def env_factories(config: PPOConfig) -> list[EnvFactory]:
+    """One factory per environment: the ids of ``config.env_ids`` in turn."""
+    return [EnvFactory(config.env_ids[i % len(config.env_ids)], config) for i in range(config.n_envs)]
+
+
+def make_vec_env(config: PPOConfig) -> Any:
+    """The stable-baselines3 vector environment of a training run, seeded with ``config.seed``."""
+    from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
+
+    factories = env_factories(config)
+    if config.vec_env == "subproc" and config.n_envs > 1:
+        venv = SubprocVecEnv(factories, start_method="fork")
+    else:
+        venv = DummyVecEnv(factories)
+    venv.seed(config.seed)
+    return venv

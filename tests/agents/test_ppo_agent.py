@@ -1,0 +1,56 @@
+import json
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from agent_helpers import drive
+
+from realistic_indoor.agents import make_agent
+from realistic_indoor.agents.rl import PPOConfig, ppo_preset
+from realistic_indoor.errors import ConfigError
+
+pytest.importorskip("stable_baselines3")
+
+
+@pytest.fixture(scope="module")
+def model_path(tmp_path_factory):
+    from realistic_indoor.agents.rl import train_ppo
+
+    path = tmp_path_factory.mktemp("ppo") / "smoke.zip"
+    result = train_ppo(ppo_preset("smoke", env_ids=("HouseExplore-v0",)), path, log=lambda line: None)
+    assert result.model_path == path and result.timesteps >= 256
+    return path
+
+
+def test_train_ppo__saves_the_model_and_its_config(model_path):
+    meta = json.loads(model_path.with_suffix(".json").read_text())
+    assert meta["config"]["env_ids"] == ["HouseExplore-v0"] and meta["timesteps"] >= 256
+
+
+@pytest.mark.parametrize("action_type", ["continuous", "discrete"])
+def test_ppo_agent__acts_in_either_action_space(model_path, hall_office, action_type):
+    env = gym.make("OfficeExplore-v0", building=hall_office, action_type=action_type)
+    agent = make_agent(f"ppo:{model_path}", env)
+    actions, _ = drive(env, agent, steps=20)
+    assert all(isinstance(a, int) for a in actions) == (action_type == "discrete")
+    again, _ = drive(env, agent, steps=20)
+    assert np.array_equal(np.array(actions), np.array(again))  # greedy: deterministic
+
+
+def test_ppo_agent__clear_errors(model_path, hall_office, tmp_path):
+    env = gym.make("OfficeExplore-v0", building=hall_office, local_map={"size_px": 48})
+    agent = make_agent(f"ppo:{model_path}", env)
+    obs, info = env.reset(seed=0)
+    with pytest.raises(ConfigError, match="expects 'local_map' of shape"):
+        agent.act(obs, info)
+    with pytest.raises(ConfigError, match="not found"):
+        make_agent(f"ppo:{tmp_path / 'none.zip'}", env)
+
+
+def test_ppo_config__rejects_bad_values():
+    with pytest.raises(ConfigError, match="unknown ids"):
+        PPOConfig(env_ids=("MazeExplore-v0",))
+    with pytest.raises(ConfigError, match="unknown PPO preset"):
+        ppo_preset("huge")
+    with pytest.raises(ConfigError, match="n_envs"):
+        ppo_preset("default", n_envs=0)

@@ -1,0 +1,64 @@
+import csv
+import importlib.util
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+SCRIPT = Path(__file__).resolve().parents[2] / "experiments" / "realistic_vs_random.py"
+
+
+def _load():
+    spec = importlib.util.spec_from_file_location("realistic_vs_random", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # dataclasses look their module up
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module")
+def small_run(tmp_path_factory):
+    pytest.importorskip("stable_baselines3")
+    out = tmp_path_factory.mktemp("rvr")
+    assert _load().main(["--small", "--out", str(out)]) == 0
+    return out
+
+
+def test_realistic_vs_random__small_run_writes_report_figures_and_raw_results(small_run):
+    report = (small_run / "realistic_vs_random.md").read_text()
+    for heading in (
+        "## Coverage AUC (rank)",
+        "## Rankings compared with random maps",
+        "## Where the metrics differ",
+        "## Transfer of PPO to realistic and real buildings",
+    ):
+        assert heading in report
+    assert "realistic_vs_random.py --small --out" in report  # the command that regenerates it
+    for name in (
+        "realistic_vs_random.png",
+        "realistic_vs_random_curves.png",
+        "ppo_random.zip",
+        "ppo_realistic.zip",
+    ):
+        assert (small_run / name).stat().st_size > 0
+    rows = list(csv.DictReader((small_run / "realistic_vs_random" / "summary.csv").open()))
+    agents = {r["agent"] for r in rows}
+    assert agents == {
+        "random",
+        "wall follower",
+        "frontier",
+        "utility",
+        "structure",
+        "PPO (random maps)",
+        "PPO (realistic maps)",
+    }
+    groups = {r["group"] for r in rows}
+    assert {"random maps", "offices", "schools", "houses"} <= groups
+
+
+def test_realistic_vs_random__real_plans_are_a_test_set(small_run, real_plans_dir):
+    data = json.loads((small_run / "realistic_vs_random" / "results.json").read_text())
+    groups = {e["group"] for e in data["episodes"]}
+    assert {"real offices", "real schools"} <= groups
+    assert all(Path(p).is_file() for p in data["meta"]["real_plans"])

@@ -185,16 +185,17 @@ class MapExplorer(Agent):
             self._backing -= 1
             v, w = -_BACKUP_SPEED * self.spec.robot.max_speed_m_s, 0.0
         elif self._jam >= _JAM_STEPS:
-            self._recover()
+            self._recover(pose)
             v, w = 0.0, 0.0
         elif self._stuck():
-            self._give_up()
+            self._give_up(pose)
             v, w = 0.0, 0.0
         else:
             if collided or self._needs_plan(pose):
                 self._plan(pose)
             v, w = self.follower.command(pose, self._clearance_ahead(ranges))
-        self._jam = self._jam + 1 if collided or self.follower.blocked else 0
+        pushing = collided and self._last_v > 0.0  # touching a wall while turning on the spot is fine
+        self._jam = self._jam + 1 if pushing or self.follower.blocked else 0
         self._last_v = v
         self._last_pose = pose
         return self.spec.action(v, w)
@@ -258,23 +259,41 @@ class MapExplorer(Agent):
         (x0, y0), (x1, y1) = self._recent[0], self._recent[-1]
         return math.hypot(x1 - x0, y1 - y0) < self.config.stuck_move_m
 
-    def _give_up(self) -> None:
+    def _give_up(self, pose: tuple[float, float, float]) -> None:
         if self._victim is not None:
             self.victims.visited[self._victim] = True
         elif self._goal is not None:
             self.blacklist.append(self._goal)
-        self._recover()
+        self._recover(pose)
         self._recent.clear()
 
-    def _recover(self) -> None:
-        """Back up a little and replan; a goal that needed this too often is given up."""
+    def _recover(self, pose: tuple[float, float, float]) -> None:
+        """Back up a little (if the map shows room behind) and replan.
+
+        A goal that needed this too often is given up.
+        """
         self._recoveries += 1
         if self._recoveries > _MAX_RECOVERIES and self._victim is None and self._goal is not None:
             self.blacklist.append(self._goal)
             self._recoveries = 0
         self.follower.clear()
         self._jam = 0
-        self._backing = _BACKUP_STEPS
+        self._backing = _BACKUP_STEPS if self._room_behind(pose) else 0
+
+    def _room_behind(self, pose: tuple[float, float, float]) -> bool:
+        """Whether the map shows free floor where backing up would take the robot."""
+        x, y, heading = pose
+        reach = (
+            self.spec.robot.radius_m
+            + _BACKUP_STEPS * _BACKUP_SPEED * self.spec.robot.max_speed_m_s * self.spec.dt_s
+        )
+        for side in (-0.8, 0.0, 0.8):
+            angle = heading + math.pi + side
+            r, c = self.map.to_cell(x + reach * math.cos(angle), y + reach * math.sin(angle))
+            h, w = self.map.state.shape
+            if not (0 <= r < h and 0 <= c < w) or self.map.state[r, c] != FREE_CELL:
+                return False
+        return True
 
     def _goal_open(self) -> bool:
         r, c = self.map.to_cell(*self._goal)

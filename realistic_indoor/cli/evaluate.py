@@ -18,7 +18,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="run agents in environments over many seeds; metrics, CSV/JSON, figures",
         description="Run every agent in every environment for --episodes seeds (the same seeds, hence "
         "the same buildings, for every agent), in parallel processes or on a Ray cluster. Writes "
-        "episodes.csv, summary.csv (means with 95%% confidence intervals), results.json and coverage "
+        "episodes.csv, summary.csv (means with 95% confidence intervals), results.json and coverage "
         "figures to --out, and prints the summary.",
         epilog="Environments are registered ids, or ID:PLAN to run a plan file (or every plan in a "
         "folder) as the fixed building, e.g. OfficeExplore-v0:../shared/data/real_floorplans/office. "

@@ -194,8 +194,10 @@ class MapExplorer(Agent):
             if collided or self._needs_plan(pose):
                 self._plan(pose)
             v, w = self.follower.command(pose, self._clearance_ahead(ranges))
-        pushing = collided and self._last_v > 0.0  # touching a wall while turning on the spot is fine
-        self._jam = self._jam + 1 if pushing or self.follower.blocked else 0
+            if self.follower.blocked:
+                w = self._turn_away(ranges)
+        # Touching a wall while turning on the spot towards the path is fine.
+        self._jam = self._jam + 1 if (collided or self.follower.blocked) and not self.follower.turning else 0
         self._last_v = v
         self._last_pose = pose
         return self.spec.action(v, w)
@@ -226,6 +228,20 @@ class MapExplorer(Agent):
         x0, y0, heading = self._last_pose
         forward = (pose[0] - x0) * math.cos(heading) + (pose[1] - y0) * math.sin(heading)
         return forward < 0.5 * speed_m_s * self.spec.dt_s and self._clearance_ahead(ranges) > _EXPLAINED_M
+
+    def _turn_away(self, ranges: np.ndarray) -> float:
+        """Turn rate away from the nearer side of an obstacle right ahead (rad/s).
+
+        Pure pursuit cuts corners: at a door jamb the robot can end up facing the jamb's end
+        with its path just beyond it. Turning away lets it slide past.
+        """
+        front = np.abs(self._offsets) <= math.pi / 3
+        left = front & (self._offsets > 0)
+        right = front & (self._offsets < 0)
+        nearer_right = float(np.min(ranges[right], initial=np.inf)) < float(
+            np.min(ranges[left], initial=np.inf)
+        )
+        return (0.5 if nearer_right else -0.5) * self.spec.robot.max_turn_rate_rad_s
 
     def _clearance_ahead(self, ranges: np.ndarray) -> float:
         """Free distance in front of the robot's disc along its heading (m), from the scan."""

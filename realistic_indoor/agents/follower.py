@@ -59,6 +59,7 @@ class PathFollower:
         path: ``(N, 2)`` points (m) being followed; empty when there is none.
         blocked: Whether the last command wanted to drive on but an obstacle right ahead
             stopped it.
+        turning: Whether the last command turned the robot on the spot towards the path.
     """
 
     def __init__(
@@ -69,6 +70,7 @@ class PathFollower:
         self.config = config or FollowerConfig()
         self.path = np.zeros((0, 2))
         self.blocked = False
+        self.turning = False
         self._progress = 0
 
     def set_path(self, points: np.ndarray) -> None:
@@ -98,7 +100,7 @@ class PathFollower:
             pose: The robot's pose (m, m, rad).
             clearance_ahead_m: Free distance ahead of the robot's front (m), from the laser.
         """
-        self.blocked = False
+        self.blocked = self.turning = False
         if self.done(pose):
             return 0.0, 0.0
         x, y, heading = pose
@@ -107,6 +109,7 @@ class PathFollower:
         c = self.config
         w = max(-self.w_max, min(self.w_max, c.turn_gain * error))
         if abs(error) > c.turn_in_place_rad:
+            self.turning = True
             return 0.0, w
         to_end = math.dist((x, y), self.path[-1])
         near_end = max(_MIN_SPEED_SHARE, min(1.0, to_end / c.slow_radius_m))

@@ -11,7 +11,7 @@ Train on the random baseline instead, or a longer run for a better policy::
 
 The model is saved with its config and training curve (``.json`` beside it); the evaluation
 (the PPO agent, the random agent and the frontier explorer on the default-size environments)
-goes to ``<out>_eval/`` and is printed.
+goes to ``<out>_eval/`` and is printed. ``--no-train`` evaluates the model already at ``--out``.
 """
 
 from __future__ import annotations
@@ -41,6 +41,7 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
     )
     p.add_argument("--eval-max-steps", type=int, default=None, help="step limit of the evaluation episodes")
     p.add_argument("--workers", type=int, default=None, help="evaluation processes (default: cores)")
+    p.add_argument("--no-train", action="store_true", help="only evaluate the model already at --out")
     return p.parse_args(argv)
 
 
@@ -54,19 +55,21 @@ def main(argv: list[str] | None = None) -> int:
     if args.timesteps is not None:
         changes["total_timesteps"] = args.timesteps
     config = ppo_preset(args.preset, **changes)
-    print(
-        f"training PPO ({args.preset}) on {', '.join(config.env_ids)} for {config.total_timesteps} steps",
-        flush=True,
-    )
-    result = train_ppo(config, args.out, log=lambda line: print(line, flush=True))
-    print(f"saved {result.model_path} after {result.seconds:.0f} s, {result.episodes} episodes", flush=True)
+    model_path = Path(args.out).with_suffix(".zip")
+    if not args.no_train:
+        steps = config.total_timesteps
+        print(f"training PPO ({args.preset}) on {', '.join(config.env_ids)} for {steps} steps", flush=True)
+        result = train_ppo(config, model_path, log=lambda line: print(line, flush=True))
+        print(
+            f"saved {result.model_path} after {result.seconds:.0f} s, {result.episodes} episodes", flush=True
+        )
     if args.eval_episodes <= 0:
         return 0
     eval_ids = args.eval_envs.split(",") if args.eval_envs else list(config.env_ids)
     out_dir = Path(args.out).with_suffix("").as_posix() + "_eval"
     kwargs = {} if args.eval_max_steps is None else {"max_steps": args.eval_max_steps}
     results = evaluate(
-        [f"ppo:{result.model_path}", "random", "frontier"],
+        [f"ppo:{model_path}", "random", "frontier"],
         eval_ids,
         episodes=args.eval_episodes,
         seed=1000,

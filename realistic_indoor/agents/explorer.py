@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from abc import abstractmethod
-from collections import deque
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
@@ -23,20 +22,16 @@ from realistic_indoor.agents.follower import FollowerConfig, PathFollower
 from realistic_indoor.agents.frontiers import Frontiers, find_frontiers, unobserved
 from realistic_indoor.agents.occupancy import FREE_CELL, Box, OwnMap
 from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
+from realistic_indoor.agents.reflexes import Reflexes
 from realistic_indoor.agents.victims import VictimTracker
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim._checks import require_int, require_positive
 
 __all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
 
-_BACKUP_STEPS, _BACKUP_SPEED = 3, 0.3
-"""A stuck robot backs up this many steps at this share of its top speed, then replans."""
-_JAM_STEPS, _MAX_RECOVERIES = 5, 3
-"""A robot touching a wall, or blocked right ahead, this many steps in a row backs up and replans;
-after this many such recoveries on the way to one goal, the goal is blacklisted."""
-_EXPLAINED_M, _MIN_BUMP_SPEED_M_S = 0.1, 0.1
-"""A collision is explained by a wall the laser sees this close ahead of the robot's disc (m); a
-robot slower than this (m/s) is not told apart from one stopped by an obstacle."""
+_MAX_RECOVERIES = 3
+"""After this many recoveries from jams (:class:`Reflexes`) on the way to one goal, the goal is
+blacklisted."""
 
 
 @dataclass(frozen=True)
@@ -147,7 +142,7 @@ class MapExplorer(Agent):
         self.map = OwnMap(spec.beam_offsets_rad(), spec.lidar.max_range_m, c.map_resolution_m, sensor)
         self.victims = VictimTracker(spec.victims.sensor_range_m if spec.victims else 1.0)
         self.follower = PathFollower(spec.robot.max_speed_m_s, spec.robot.max_turn_rate_rad_s, c.follower)
-        self._offsets = spec.beam_offsets_rad()
+        self.reflexes = Reflexes(spec, self.map, c.bump_half_width_m, c.stuck_steps, c.stuck_move_m)
         self._min_cells = max(1, math.ceil(c.min_frontier_m / c.map_resolution_m))
         self.reset()
 
@@ -162,95 +157,36 @@ class MapExplorer(Agent):
         self._victim: int | None = None
         self._since_plan = 0
         self._new_cells = 0
-        self._collisions = 0
-        self._last_v = 0.0
-        self._last_pose: tuple[float, float, float] | None = None
-        self._backing = 0
-        self._jam = 0
         self._recoveries = 0
-        self._recent: deque[tuple[float, float]] = deque(maxlen=self.config.stuck_steps)
+        self.reflexes.reset()
 
     # -- the loop ----------------------------------------------------------------------------------------
     def act(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> np.ndarray | int:
         """Map the scan, replan if needed, and return the action that follows the path."""
         pose = (float(obs["pose"][0]), float(obs["pose"][1]), float(obs["pose"][2]))
         ranges = np.asarray(obs["scan"], dtype=np.float32) * np.float32(self.spec.lidar.max_range_m)
-        collided = self._bumped(pose, ranges, float(obs["velocity"][0]), info)
+        reflexes = self.reflexes
+        collided = reflexes.bumped(pose, ranges, float(obs["velocity"][0]), info)
         self._new_cells += self.map.integrate(pose, ranges)
         self._since_plan += 1
-        self._recent.append(pose[:2])
         if "victims" in obs and self.config.victim_approach_m is not None:
             self.victims.observe(pose, obs["victims"])
-        if self._backing > 0:
-            self._backing -= 1
-            v, w = -_BACKUP_SPEED * self.spec.robot.max_speed_m_s, 0.0
-        elif self._jam >= _JAM_STEPS:
+        if reflexes.backing:
+            v, w = reflexes.back_up()
+        elif reflexes.jammed:
             self._recover(pose)
             v, w = 0.0, 0.0
-        elif self._stuck():
+        elif reflexes.stuck:
             self._give_up(pose)
             v, w = 0.0, 0.0
         else:
             if collided or self._needs_plan(pose):
                 self._plan(pose)
-            v, w = self.follower.command(pose, self._clearance_ahead(ranges))
+            v, w = self.follower.command(pose, reflexes.clearance_ahead(ranges))
             if self.follower.blocked:
-                w = self._turn_away(ranges)
-        # Touching a wall while turning on the spot towards the path is fine.
-        self._jam = self._jam + 1 if (collided or self.follower.blocked) and not self.follower.turning else 0
-        self._last_v = v
-        self._last_pose = pose
+                w = reflexes.turn_away(ranges)
+        reflexes.record(pose, collided, self.follower.blocked, self.follower.turning)
         return self.spec.action(v, w)
-
-    def _bumped(
-        self, pose: tuple[float, float, float], ranges: np.ndarray, speed_m_s: float, info: dict[str, Any]
-    ) -> bool:
-        """Whether the robot touched a wall during the last step.
-
-        A contact that stopped the robot while it drove forward, with no wall in the laser's
-        view just ahead of it, is an obstacle the laser cannot see (the line across an
-        entrance): it is marked on the map, across the direction the robot was driving.
-        """
-        count = int(info.get("collisions", 0))
-        hit = count > self._collisions
-        self._collisions = count
-        if hit and self._last_pose is not None and self._unexplained(pose, ranges, speed_m_s):
-            r = self.spec.robot.radius_m
-            self.map.mark_blocked(
-                (pose[0], pose[1], self._last_pose[2]), r, r + self.config.bump_half_width_m
-            )
-        return hit
-
-    def _unexplained(self, pose: tuple[float, float, float], ranges: np.ndarray, speed_m_s: float) -> bool:
-        """Whether the robot, driving forward, went less than half the way with nothing seen ahead."""
-        if speed_m_s < _MIN_BUMP_SPEED_M_S:
-            return False
-        x0, y0, heading = self._last_pose
-        forward = (pose[0] - x0) * math.cos(heading) + (pose[1] - y0) * math.sin(heading)
-        return forward < 0.5 * speed_m_s * self.spec.dt_s and self._clearance_ahead(ranges) > _EXPLAINED_M
-
-    def _turn_away(self, ranges: np.ndarray) -> float:
-        """Turn rate away from the nearer side of an obstacle right ahead (rad/s).
-
-        Pure pursuit cuts corners: at a door jamb the robot can end up facing the jamb's end
-        with its path just beyond it. Turning away lets it slide past.
-        """
-        front = np.abs(self._offsets) <= math.pi / 3
-        left = front & (self._offsets > 0)
-        right = front & (self._offsets < 0)
-        nearer_right = float(np.min(ranges[right], initial=np.inf)) < float(
-            np.min(ranges[left], initial=np.inf)
-        )
-        return (0.5 if nearer_right else -0.5) * self.spec.robot.max_turn_rate_rad_s
-
-    def _clearance_ahead(self, ranges: np.ndarray) -> float:
-        """Free distance in front of the robot's disc along its heading (m), from the scan."""
-        r = self.spec.robot.radius_m
-        lateral = np.abs(ranges * np.sin(self._offsets))
-        ahead = (np.abs(self._offsets) < math.pi / 2) & (lateral <= r)
-        if not ahead.any():
-            return self.spec.lidar.max_range_m
-        return float(np.min(ranges[ahead] * np.cos(self._offsets[ahead]))) - r
 
     def _needs_plan(self, pose: tuple[float, float, float]) -> bool:
         c = self.config
@@ -269,47 +205,23 @@ class MapExplorer(Agent):
         grown = self._new_cells * self.map.resolution_m**2 >= c.replan_new_m2
         return self._since_plan >= c.replan_steps and grown
 
-    def _stuck(self) -> bool:
-        if len(self._recent) < self._recent.maxlen:
-            return False
-        (x0, y0), (x1, y1) = self._recent[0], self._recent[-1]
-        return math.hypot(x1 - x0, y1 - y0) < self.config.stuck_move_m
-
     def _give_up(self, pose: tuple[float, float, float]) -> None:
+        """No progress towards the goal: blacklist it (or mark the victim visited) and back up."""
         if self._victim is not None:
             self.victims.visited[self._victim] = True
         elif self._goal is not None:
             self.blacklist.append(self._goal)
         self._recover(pose)
-        self._recent.clear()
+        self.reflexes.restart_progress()
 
     def _recover(self, pose: tuple[float, float, float]) -> None:
-        """Back up a little (if the map shows room behind) and replan.
-
-        A goal that needed this too often is given up.
-        """
+        """Back up a little and replan; a goal that needed this too often is blacklisted."""
         self._recoveries += 1
         if self._recoveries > _MAX_RECOVERIES and self._victim is None and self._goal is not None:
             self.blacklist.append(self._goal)
             self._recoveries = 0
         self.follower.clear()
-        self._jam = 0
-        self._backing = _BACKUP_STEPS if self._room_behind(pose) else 0
-
-    def _room_behind(self, pose: tuple[float, float, float]) -> bool:
-        """Whether the map shows free floor where backing up would take the robot."""
-        x, y, heading = pose
-        reach = (
-            self.spec.robot.radius_m
-            + _BACKUP_STEPS * _BACKUP_SPEED * self.spec.robot.max_speed_m_s * self.spec.dt_s
-        )
-        for side in (-0.8, 0.0, 0.8):
-            angle = heading + math.pi + side
-            r, c = self.map.to_cell(x + reach * math.cos(angle), y + reach * math.sin(angle))
-            h, w = self.map.state.shape
-            if not (0 <= r < h and 0 <= c < w) or self.map.state[r, c] != FREE_CELL:
-                return False
-        return True
+        self.reflexes.start_backup(pose)
 
     def _goal_open(self) -> bool:
         r, c = self.map.to_cell(*self._goal)
@@ -357,7 +269,7 @@ class MapExplorer(Agent):
         points = self.map.to_world(cells[:, 0] + ctx.box.r0, cells[:, 1] + ctx.box.c0)
         goal = (float(points[-1, 0]), float(points[-1, 1]))
         if self._goal is None or math.dist(goal, self._goal) > self.config.blacklist_radius_m:
-            self._recent.clear()
+            self.reflexes.restart_progress()
             self._recoveries = 0
         self._goal = goal
         self.follower.set_path(points)

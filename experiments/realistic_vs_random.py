@@ -118,13 +118,32 @@ def main(argv: list[str] | None = None) -> int:
     relabel(results, agents)
     given = sys.argv[1:] if argv is None else argv
     command = " ".join([".venv/bin/python experiments/realistic_vs_random.py", *map(shlex.quote, given)])
-    meta = {"command": command, "agents": agents, "episodes": episodes, "real_plans": [s.plan for s in real]}
+    meta = {
+        "command": command,
+        "commit": _commit(),
+        "agents": agents,
+        "episodes": episodes,
+        "real_plans": [s.plan for s in real],
+    }
     write_results(results, out / "realistic_vs_random", meta)
     report = analyse(results, list(agents), command, episodes, len(real))
     (out / "realistic_vs_random.md").write_text(report, encoding="utf-8")
     draw(results, list(agents), out)
     print(report)
     return 0
+
+
+def _commit() -> str | None:
+    """The checkout's commit, recorded with the results (``None`` outside git)."""
+    import subprocess
+
+    try:
+        done = subprocess.run(
+            ["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True
+        )
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return done.stdout.strip()
 
 
 def ensure_models(folder: Path, preset: str, small: bool) -> dict[str, str]:

@@ -5,6 +5,7 @@ from agent_helpers import drive, small_env
 
 from realistic_indoor.agents import AGENTS, RandomAgent, RobotSpec, make_agent
 from realistic_indoor.envs import PRESETS
+from realistic_indoor.envs.search import SearchEnv
 from realistic_indoor.errors import ConfigError
 
 MAP_FREE_AGENTS = [name for name in AGENTS if name != "ppo"]
@@ -21,6 +22,32 @@ def test_every_agent__runs_on_every_registered_id(name, env_id):
         or info["coverage"] >= 0.9
         or info.get("victims_found") == info.get("victims_total")
     )
+
+
+class _Blindfolded(SearchEnv):
+    """A search environment whose building and simulator cannot be read from outside."""
+
+    @property
+    def building(self):
+        raise AssertionError("an agent read the building")
+
+    @property
+    def simulation(self):
+        raise AssertionError("an agent read the simulator")
+
+    @property
+    def victims(self):
+        raise AssertionError("an agent read the victims")
+
+
+@pytest.mark.parametrize("name", MAP_FREE_AGENTS)
+def test_every_agent__needs_only_observations_and_info(name, hall_office):
+    env = _Blindfolded(building=hall_office, max_steps=300)
+    agent = make_agent(name, RobotSpec.from_env(env))
+    actions, info = drive(env, agent, seed=2)
+    assert len(actions) == 300 or info["victims_found"] == info["victims_total"]
+    if name in ("frontier", "utility", "structure"):
+        assert info["victims_found"] >= 1
 
 
 def test_make_agent__unknown_name_lists_the_valid_ones(hall_office):

@@ -3,10 +3,11 @@ import json
 import gymnasium as gym
 import numpy as np
 import pytest
-from agent_helpers import drive
+from agent_helpers import drive, small_env
 
 from realistic_indoor.agents import make_agent
 from realistic_indoor.agents.rl import PPOConfig, ppo_preset
+from realistic_indoor.envs import PRESETS
 from realistic_indoor.errors import ConfigError
 
 pytest.importorskip("stable_baselines3")
@@ -35,6 +36,13 @@ def test_ppo_agent__acts_in_either_action_space(model_path, hall_office, action_
     assert all(isinstance(a, int) for a in actions) == (action_type == "discrete")
     again, _ = drive(env, agent, steps=20)
     assert np.array_equal(np.array(actions), np.array(again))  # greedy: deterministic
+
+
+@pytest.mark.parametrize("env_id", sorted(PRESETS))
+def test_ppo_agent__runs_on_every_registered_id(model_path, env_id):
+    env = small_env(env_id, max_steps=20)
+    actions, _ = drive(env, make_agent(f"ppo:{model_path}", env), seed=1)
+    assert len(actions) >= 1
 
 
 def test_ppo_agent__clear_errors(model_path, hall_office, tmp_path):

@@ -98,6 +98,9 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         "--models", default=None, help="folder of ppo_random.zip and ppo_realistic.zip (default: --out)"
     )
     p.add_argument("--no-ppo", action="store_true", help="leave the PPO agents out")
+    p.add_argument(
+        "--report-only", action="store_true", help="redo the report and figures from the saved results"
+    )
     return p.parse_args(argv)
 
 
@@ -107,6 +110,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = Path(args.out) if args.out else RESULTS
+    if args.report_only:
+        return report_only(out)
     agents = dict(BASELINES)
     if not args.no_ppo:
         agents |= ensure_models(Path(args.models) if args.models else out, setup.ppo_preset, args.small)
@@ -129,6 +134,20 @@ def main(argv: list[str] | None = None) -> int:
     report = analyse(results, list(agents), command, episodes, len(real))
     (out / "realistic_vs_random.md").write_text(report, encoding="utf-8")
     draw(results, list(agents), out)
+    print(report)
+    return 0
+
+
+def report_only(out: Path) -> int:
+    """Write the report and figures again from ``out/realistic_vs_random/results.json``."""
+    from realistic_indoor.evaluation import read_results
+
+    results, meta = read_results(out / "realistic_vs_random" / "results.json")
+    report = analyse(
+        results, list(meta["agents"]), meta["command"], meta["episodes"], len(meta["real_plans"])
+    )
+    (out / "realistic_vs_random.md").write_text(report, encoding="utf-8")
+    draw(results, list(meta["agents"]), out)
     print(report)
     return 0
 
@@ -223,6 +242,10 @@ def analyse(results: list, agents: list[str], command: str, episodes: int, n_pla
         "## Share of episodes reaching 90% coverage",
         "",
         _table(rows, agents, groups, "reached_target", None),
+        "",
+        "## Collisions per episode (steps touching a wall)",
+        "",
+        _table(rows, agents, groups, "collisions", None),
         "",
         "## Rankings compared with random maps",
         "",

@@ -62,3 +62,9 @@ def test_realistic_vs_random__real_plans_are_a_test_set(small_run, real_plans_di
     groups = {e["group"] for e in data["episodes"]}
     assert {"real offices", "real schools"} <= groups
     assert all(Path(p).is_file() for p in data["meta"]["real_plans"])
+
+
+def test_realistic_vs_random__report_regenerates_byte_for_byte(small_run):
+    first = (small_run / "realistic_vs_random.md").read_bytes()
+    assert _load().main(["--small", "--out", str(small_run), "--report-only"]) == 0
+    assert (small_run / "realistic_vs_random.md").read_bytes() == first

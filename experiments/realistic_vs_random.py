@@ -256,6 +256,12 @@ def analyse(results: list, agents: list[str], command: str, episodes: int, n_pla
         versus = f" (Kendall tau vs random maps: {tau:+.2f})" if math.isfinite(tau) else ""
         lines.append(f"- **{g}**: {' > '.join(order[g])}{versus}")
     lines += ["", "## Where the metrics differ", "", *_shifts(rows, agents, groups, reference)]
+    lines += [
+        "",
+        "## Paired differences against the frontier explorer",
+        "",
+        *_paired(results, agents, groups),
+    ]
     lines += ["", "## Transfer of PPO to realistic and real buildings", "", *_transfer(results, groups)]
     return "\n".join(lines) + "\n"
 
@@ -297,6 +303,34 @@ def _shifts(rows: list, agents: list[str], groups: list[str], reference: str) ->
         lines.append(f"- {a}: random maps {base[RANK_METRIC]:.2f}; " + ", ".join(parts))
     lines.append("")
     lines.append("(* the 95% intervals do not overlap.)")
+    return lines
+
+
+def _paired(results: list, agents: list[str], groups: list[str], baseline: str = "frontier") -> list[str]:
+    """Each agent's coverage AUC minus the frontier explorer's, episode by episode, per set."""
+    from realistic_indoor.evaluation.ranking import paired_difference
+
+    if baseline not in agents:
+        return [f"({baseline} left out.)"]
+    lines = [
+        f"Coverage AUC of each agent minus {baseline}'s on the same buildings and seeds, mean and 95% "
+        "interval (* the interval excludes 0). Pairing removes the spread between buildings, so this "
+        "separates agents that the tables above cannot.",
+        "",
+        "| agent | " + " | ".join(groups) + " |",
+        "|---" * (len(groups) + 1) + "|",
+    ]
+    for a in agents:
+        if a == baseline:
+            continue
+        cells = []
+        for g in groups:
+            d = paired_difference(results, a, baseline, g)
+            apart = d.n > 1 and (d.low > 0 or d.high < 0)
+            cells.append(
+                f"{d.mean:+.3f} [{d.low:+.3f}, {d.high:+.3f}]{' *' if apart else ''}" if d.n else "-"
+            )
+        lines.append(f"| {a} | " + " | ".join(cells) + " |")
     return lines
 
 

@@ -123,17 +123,22 @@ def summarize(
 
 
 def mean_curve(
-    curves: Sequence[Sequence[float]], level: float = 0.95
+    curves: Sequence[Sequence[float]], level: float = 0.95, length: int | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Mean of coverage curves with a pointwise bootstrap interval.
 
     Curves of episodes that ended early (the target reached, or a shorter drive) are held at
     their last value.
 
+    Args:
+        curves: The curves.
+        level: Confidence level of the band.
+        length: Points to return (at least the longest curve's); ``None``: the longest curve's.
+
     Returns:
-        ``(mean, low, high)`` arrays as long as the longest curve.
+        ``(mean, low, high)`` arrays of ``length`` points.
     """
-    length = max(len(c) for c in curves)
+    length = max([len(c) for c in curves] + [length or 0])
     m = np.array([list(c) + [c[-1]] * (length - len(c)) for c in curves], dtype=float)
     if len(m) == 1:
         return m[0], m[0], m[0]

@@ -23,7 +23,7 @@ def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "
     """Draw mean coverage against time or distance, with 95% bootstrap bands, and save it.
 
     One panel per environment group, one line per agent. Episodes that ended early are held at
-    their final coverage.
+    their final coverage: over time up to the step limit, over distance up to the longest drive.
 
     Args:
         results: Episode results.
@@ -48,7 +48,9 @@ def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "
         for (g, agent), episodes in by_agent_group.items():
             if g != group:
                 continue
-            mean, low, high = mean_curve([getattr(e, curve_field) for e in episodes])
+            mean, low, high = mean_curve(
+                [getattr(e, curve_field) for e in episodes], length=_horizon(episodes, x)
+            )
             t = np.arange(len(mean)) * getattr(episodes[0], step_field)
             (line,) = ax.plot(t, mean, label=f"{agent} (n={len(episodes)})", lw=1.5)
             ax.fill_between(t, low, high, color=line.get_color(), alpha=0.2, lw=0)
@@ -67,3 +69,10 @@ def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
+
+
+def _horizon(episodes: Sequence[EpisodeResult], x: str) -> int | None:
+    """Points of a time curve up to the step limit (``None`` for distance: the longest drive)."""
+    if x != "time":
+        return None
+    return max(round(e.max_steps * e.dt_s / e.curve_dt_s) + 1 for e in episodes)

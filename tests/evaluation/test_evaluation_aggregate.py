@@ -72,3 +72,4 @@ def test_mean_curve__holds_short_curves_at_their_last_value():
     mean, low, high = mean_curve([[0.0, 0.5, 1.0], [0.0, 0.5]])
     assert mean.tolist() == [0.0, 0.5, 0.75]
     assert np.all(low <= mean) and np.all(mean <= high)
+    assert mean_curve([[0.0, 0.5, 1.0], [0.0, 0.5]], length=5)[0].tolist() == [0.0, 0.5, 0.75, 0.75, 0.75]

@@ -167,7 +167,7 @@ class MapExplorer(Agent):
         ranges = np.asarray(obs["scan"], dtype=np.float32) * np.float32(self.spec.lidar.max_range_m)
         reflexes = self.reflexes
         collided = reflexes.bumped(pose, ranges, float(obs["velocity"][0]), info)
-        self._new_cells += self.map.integrate(pose, ranges)
+        self._new_cells += self.map.integrate(pose, ranges, self.spec.robot.radius_m)
         self._since_plan += 1
         if "victims" in obs and self.config.victim_approach_m is not None:
             self.victims.observe(pose, obs["victims"])

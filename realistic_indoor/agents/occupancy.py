@@ -145,12 +145,16 @@ class OwnMap:
         )
 
     # -- sensing -------------------------------------------------------------------------------------
-    def integrate(self, pose: tuple[float, float, float], ranges_m: np.ndarray) -> int:
+    def integrate(
+        self, pose: tuple[float, float, float], ranges_m: np.ndarray, footprint_m: float = 0.0
+    ) -> int:
         """Add a laser scan taken at ``pose`` (odometry frame); return the newly observed cells.
 
         Args:
             pose: ``(x m, y m, heading rad)`` of the robot.
             ranges_m: ``(n_beams,)`` readings (m); the maximum range means no return.
+            footprint_m: The unknown cells within this distance of the robot are marked free:
+                the robot stands there (its laser's blind sector may never have seen them).
         """
         ranges = np.asarray(ranges_m, dtype=np.float32)
         returned = ranges < self.max_range_m * (1.0 - _RETURN_TOLERANCE)
@@ -160,8 +164,9 @@ class OwnMap:
         part = self.state[box.slices]
         new_free = seen & (part == UNKNOWN_CELL)
         part[new_free] = FREE_CELL
+        new_walls = self._footprint(pose, footprint_m) if footprint_m > 0 else 0
         hits = self._endpoints(pose, ranges[returned], self._offsets[returned])
-        new_walls = int(np.count_nonzero(self.state[hits] == UNKNOWN_CELL))
+        new_walls += int(np.count_nonzero(self.state[hits] == UNKNOWN_CELL))
         self.state[hits] = OCCUPIED_CELL
         k = self.known
         self.known = Box(min(k.r0, box.r0), max(k.r1, box.r1), min(k.c0, box.c0), max(k.c1, box.c1))
@@ -222,6 +227,17 @@ class OwnMap:
             k = self.known
             self.known = Box(k.r0 + pad[0], k.r1 + pad[0], k.c0 + pad[2], k.c1 + pad[2])
         return pad[0], pad[2]
+
+    def _footprint(self, pose: tuple[float, float, float], radius_m: float) -> int:
+        """Mark free the unknown cells under the robot's disc; return how many."""
+        r, c = self.to_cell(pose[0], pose[1])
+        k = math.ceil(radius_m / self.resolution_m)
+        part = self.state[r - k : r + k + 1, c - k : c + k + 1]  # inside: the laser window holds it
+        centres = self.to_world(*np.indices(part.shape) + np.array([r - k, c - k])[:, None, None])
+        under = np.hypot(centres[..., 0] - pose[0], centres[..., 1] - pose[1]) <= radius_m
+        new = under & (part == UNKNOWN_CELL)
+        part[new] = FREE_CELL
+        return int(np.count_nonzero(new))
 
     def _cells(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         res = self.resolution_m

@@ -58,6 +58,7 @@ class Reflexes:
         self.backing = 0
         self._collisions = 0
         self._jam = 0
+        self._away = 0.0
         self._last_pose: tuple[float, float, float] | None = None
         self._recent.clear()
 
@@ -96,10 +97,12 @@ class Reflexes:
         Pure pursuit cuts corners: at a door jamb the robot can end up facing the jamb's end
         with its path just beyond it. Turning away lets it slide past.
         """
-        front = np.abs(self._offsets) <= math.pi / 3
-        left = float(np.min(ranges[front & (self._offsets > 0)], initial=np.inf))
-        right = float(np.min(ranges[front & (self._offsets < 0)], initial=np.inf))
-        return (0.5 if right < left else -0.5) * self.spec.robot.max_turn_rate_rad_s
+        if self._away == 0.0:  # keep the side chosen when the block began: no dithering
+            front = np.abs(self._offsets) <= math.pi / 3
+            left = float(np.min(ranges[front & (self._offsets > 0)], initial=np.inf))
+            right = float(np.min(ranges[front & (self._offsets < 0)], initial=np.inf))
+            self._away = 0.5 if right < left else -0.5
+        return self._away * self.spec.robot.max_turn_rate_rad_s
 
     # -- after each command ------------------------------------------------------------------------------
     def record(self, pose: tuple[float, float, float], collided: bool, blocked: bool, turning: bool) -> None:
@@ -108,6 +111,8 @@ class Reflexes:
         Touching a wall while turning on the spot towards the path is not a jam.
         """
         self._jam = self._jam + 1 if (collided or blocked) and not turning else 0
+        if not blocked:
+            self._away = 0.0
         self._last_pose = pose
 
     @property

@@ -72,3 +72,12 @@ def test_own_map__search_sensor_sweeps_a_shorter_narrower_fan():
         r, c = m.to_cell(x, y)
         assert m.state[r, c] == FREE_CELL
         assert m.searched[r, c] == swept
+
+
+def test_own_map__the_robots_footprint_is_free():
+    offsets = np.linspace(-math.pi / 4, math.pi / 4, 9)  # a narrow laser: blind behind
+    m = OwnMap(offsets, max_range_m=5.0)
+    m.integrate((0.0, 0.0, 0.0), np.full(9, 5.0), footprint_m=0.25)
+    for x, y, free in ((-0.2, 0.0, True), (0.0, -0.2, True), (-0.4, 0.0, False)):
+        r, c = m.to_cell(x, y)
+        assert (m.state[r, c] == FREE_CELL) == free

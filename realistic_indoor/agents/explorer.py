@@ -24,8 +24,8 @@ from realistic_indoor.agents.occupancy import FREE_CELL, Box, OwnMap
 from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
 from realistic_indoor.agents.reflexes import Reflexes
 from realistic_indoor.agents.victims import VictimTracker
+from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_positive
 
 __all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from realistic_indoor.sim._checks import require_positive
+from realistic_indoor.checks import require_positive
 
 __all__ = ["FollowerConfig", "PathFollower"]
 

@@ -19,7 +19,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL
-from realistic_indoor.sim._checks import require_positive
+from realistic_indoor.checks import require_positive
 from realistic_indoor.sim._edt import distance_to_mask
 
 __all__ = ["CostConfig", "clearance", "costmap", "dijkstra", "trace_path"]

@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.agents.base import Agent, RobotSpec
-from realistic_indoor.sim._checks import require_int
+from realistic_indoor.checks import require_int
 
 __all__ = ["RandomAgent"]
 

@@ -16,7 +16,7 @@ import numpy as np
 from scipy import ndimage
 
 from realistic_indoor.agents.occupancy import FREE_CELL
-from realistic_indoor.sim._checks import require_positive
+from realistic_indoor.checks import require_positive
 
 __all__ = ["CORRIDOR", "HALL", "ROOM", "RegionConfig", "Regions", "find_regions"]
 

@@ -12,8 +12,8 @@ from realistic_indoor.agents.frontiers import Frontiers
 from realistic_indoor.agents.planning import dijkstra
 from realistic_indoor.agents.regions import RegionConfig, Regions, find_regions
 from realistic_indoor.agents.utility import frontier_costs
+from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_positive
 
 __all__ = ["StructureAgent", "StructureConfig"]
 

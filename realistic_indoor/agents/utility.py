@@ -11,8 +11,8 @@ from realistic_indoor.agents.base import RobotSpec
 from realistic_indoor.agents.explorer import ExplorerConfig, MapExplorer, PlanContext
 from realistic_indoor.agents.frontiers import Frontiers
 from realistic_indoor.agents.planning import dijkstra
+from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_positive
 
 __all__ = ["UtilityConfig", "UtilityFrontierAgent", "frontier_costs"]
 

@@ -8,8 +8,8 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.agents.base import Agent, RobotSpec
+from realistic_indoor.checks import require_positive, require_range
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_positive, require_range
 
 __all__ = ["WallFollower"]
 

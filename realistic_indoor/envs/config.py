@@ -9,10 +9,10 @@ from pathlib import Path
 from typing import Any
 
 from realistic_indoor.building.building import Building
+from realistic_indoor.checks import require_int, require_range
 from realistic_indoor.envs.actions import ACTION_TYPES
 from realistic_indoor.envs.rewards import RewardWeights
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_range
 from realistic_indoor.sim.lidar import LidarConfig
 from realistic_indoor.sim.mapping import LocalMapConfig
 from realistic_indoor.sim.robot import RobotConfig

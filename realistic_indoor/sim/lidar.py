@@ -9,7 +9,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim._checks import require_int, require_positive, require_range
+from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.sim.raster import WALL
 from realistic_indoor.sim.raycast import Raycaster, RayHits
 

@@ -8,8 +8,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_positive
 from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
     MAPPED_OCCUPIED,

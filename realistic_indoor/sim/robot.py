@@ -9,8 +9,8 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import pymunk
 
+from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_positive
 
 if TYPE_CHECKING:
     from realistic_indoor.sim.world import World

@@ -9,8 +9,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from realistic_indoor.building.labels import ROOM_LABELS, SemanticLabel, parse_label
+from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_positive, require_range
 
 if TYPE_CHECKING:
     from realistic_indoor.building.room import Room

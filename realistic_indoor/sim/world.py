@@ -10,8 +10,8 @@ from scipy import ndimage
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_positive
 from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
     DEFAULT_RESOLUTION_M,

@@ -6,8 +6,8 @@ from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
+from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._checks import require_int, require_positive, require_range
 
 __all__ = ["PPO_PRESETS", "PPOConfig", "ppo_preset"]
 

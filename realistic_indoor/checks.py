@@ -1,4 +1,9 @@
-"""Validation of configuration values: one clear ``ConfigError`` per bad value."""
+"""Validation of configuration values: one clear ``ConfigError`` per bad value.
+
+The config dataclasses of the simulator, the environments and the agents call these from
+``__post_init__``, so a bad value fails where it is set, naming the class, the field, the value
+given and the range allowed.
+"""
 
 from __future__ import annotations
 

@@ -28,6 +28,7 @@ import argparse
 import math
 import shlex
 import sys
+import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -90,7 +91,11 @@ SMALL = Setup(
 def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--small", action="store_true", help="tiny buildings, short episodes: seconds, for tests")
-    p.add_argument("--out", default=None, help="output folder (default experiments/results)")
+    p.add_argument(
+        "--out",
+        default=None,
+        help="output folder (default experiments/results; with --small a new temporary one)",
+    )
     p.add_argument("--episodes", type=int, default=None, help="seeds per generated set (default 10)")
     p.add_argument("--plans", type=int, default=None, help="real plans per set (default all)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: one per core)")
@@ -110,6 +115,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = Path(args.out) if args.out else RESULTS
+    if args.small and not args.out:
+        # A smoke run must not overwrite the committed results or leave smoke models there.
+        out = Path(tempfile.mkdtemp(prefix="realistic_vs_random_small_"))
+        print(f"--small without --out: writing to {out}", flush=True)
     if args.report_only:
         return report_only(out)
     agents = dict(BASELINES)
@@ -389,4 +398,6 @@ def draw(results: list, agents: list[str], out: Path) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from realistic_indoor.cli import run_script
+
+    sys.exit(run_script(main, "realistic_vs_random.py"))

@@ -83,4 +83,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from realistic_indoor.cli import run_script
+
+    sys.exit(run_script(main, "train_ppo.py"))

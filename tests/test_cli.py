@@ -6,6 +6,7 @@ from pathlib import Path
 import pytest
 
 from realistic_indoor.cli import build_parser, main
+from realistic_indoor.errors import ConfigError
 from realistic_indoor.io import load, save
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -183,3 +184,26 @@ def test_convert__infer_entrances_on_json_is_a_one_line_error(tmp_path, tiny_off
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1
     assert "floor-plan XML" in err[0]
+
+
+def test_run_script__user_error_is_one_line_and_exit_1(capsys):
+    from realistic_indoor.cli import run_script
+
+    def bad() -> int:
+        raise ConfigError("EnvConfig.max_steps must be an integer >= 1, got 0")
+
+    assert run_script(bad, "train_ppo.py") == 1
+    assert (
+        capsys.readouterr().err == "train_ppo.py: error: EnvConfig.max_steps must be an integer >= 1, got 0\n"
+    )
+    assert run_script(lambda: None, "x.py") == 0
+
+
+def test_run_script__a_bug_keeps_its_traceback():
+    from realistic_indoor.cli import run_script
+
+    def buggy() -> int:
+        raise KeyError("internal")
+
+    with pytest.raises(KeyError):
+        run_script(buggy, "x.py")

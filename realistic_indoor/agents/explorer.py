@@ -46,7 +46,7 @@ class ExplorerConfig:
         stuck_steps: A robot that moved less than ``stuck_move_m`` in this many steps while
             heading for the same goal is stuck: the goal is blacklisted, and the robot backs
             up a little. A robot touching a wall or blocked right ahead 5 steps in a row backs
-            up and replans; the third time on the way to one goal, the goal is blacklisted.
+            up and replans; the fourth time on the way to one goal, the goal is blacklisted.
         stuck_move_m: See ``stuck_steps`` (m).
         blacklist_radius_m: Frontier cells this close to a blacklisted goal are ignored (m).
         goal_still_open_m: A goal stays valid while unobserved cells lie this close to it (m).

@@ -18,7 +18,8 @@ class FrontierAgent(MapExplorer):
     are the boundaries between known free space and unknown space; the robot repeatedly drives
     to the closest one. Here "closest" is the cost of the path on the agent's costmap (the
     robot's radius kept from walls), found by one Dijkstra search that stops at the first
-    frontier cell it settles; frontiers it could not reach are blacklisted (see
+    frontier cell it settles; frontiers it cannot reach are never found by that search, and goals it
+    makes no progress towards are blacklisted (see
     :class:`~realistic_indoor.agents.explorer.MapExplorer` for the loop and the settings).
 
     Args:

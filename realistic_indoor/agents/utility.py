@@ -55,8 +55,9 @@ class UtilityFrontierAgent(MapExplorer):
 
     As ROS explore_lite: every frontier gets ``gain_weight * gain - cost_weight * cost``, the
     best one is the goal. Here the cost is the path cost on the agent's costmap (metres of clear
-    floor, more near walls) from one Dijkstra search over the whole known map, not the
-    straight-line distance explore_lite uses, and the robot heads for the frontier's nearest
+    floor, more near walls), not the straight-line distance explore_lite uses: a search for the
+    nearest frontier bounds the best score possible, then one Dijkstra search, stopped at that
+    bound, prices the frontiers; and the robot heads for the frontier's nearest
     cell. Long frontiers (open rooms, corridor ends) draw the robot further than the nearest
     frontier would; small nooks nearby are left for later.
 

@@ -13,11 +13,12 @@ import os
 import pkgutil
 import sys
 import warnings
+from collections.abc import Callable
 
 from realistic_indoor import __version__
 from realistic_indoor.errors import RealisticIndoorError
 
-__all__ = ["build_parser", "main"]
+__all__ = ["build_parser", "main", "run_script"]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -55,6 +56,32 @@ def main(argv: list[str] | None = None) -> int:
         # The reader of our output went away (e.g. `| head`): not an error of ours.
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
         return 0
+
+
+def run_script(main_fn: Callable[[], int | None], name: str) -> int:
+    """Run a script's ``main`` as the command line runs a subcommand: user errors on one line.
+
+    For the scripts of ``experiments/`` and ``benchmarks/``: a bad argument or file (any
+    :class:`~realistic_indoor.errors.RealisticIndoorError`) prints ``NAME: error: ...`` and
+    returns 1 instead of a traceback; anything else is a bug and keeps its traceback.
+
+    Args:
+        main_fn: The script's entry point, returning its exit code.
+        name: The script's name, shown before the message.
+
+    Returns:
+        The exit code: ``main_fn``'s (0 when it returns ``None``), 1 on a user error, 130 when
+        interrupted.
+    """
+    warnings.showwarning = _one_line_warning
+    try:
+        return int(main_fn() or 0)
+    except RealisticIndoorError as e:
+        print(f"{name}: error: {e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
 
 
 def _one_line_warning(message, category, filename, lineno, file=None, line=None) -> None:

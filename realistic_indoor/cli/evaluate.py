@@ -7,7 +7,14 @@ import json
 
 from realistic_indoor.errors import ConfigError
 
-_TABLE_METRICS = ("final_coverage", "reached_target", "time_to_target_s", "path_length_m", "collisions")
+_TABLE_METRICS = (
+    "coverage_auc",
+    "final_coverage",
+    "reached_target",
+    "time_to_target_s",
+    "path_length_m",
+    "collisions",
+)
 _SEARCH_METRICS = ("victims_found_share", "time_to_all_victims_s")
 
 

@@ -40,7 +40,7 @@ class EpisodeResult:
     Attributes:
         agent: Agent name.
         env: Environment label (the id, or ``id:plan``).
-        group: Environment group (the id, or ``id:folder``).
+        group: Environment group (the id, ``id:plan-stem`` for one plan file, or ``id:folder``).
         seed: The episode's seed.
         steps: Control steps taken.
         max_steps: The environment's step limit.

@@ -25,7 +25,8 @@ class EnvSpec:
             inferred, as real plans have none); ``None`` for the id's generator.
         kwargs: More keyword arguments of ``gym.make`` (``area_m2``, ``max_steps``, ...).
         label: Name of this environment in results (the id, or ``id:plan-stem``).
-        group: Name of the set it belongs to in summaries (the id, or ``id:folder``).
+        group: Name of the set it belongs to in summaries (the id, ``id:plan-stem`` for one plan
+            file, or ``id:folder``).
     """
 
     env_id: str

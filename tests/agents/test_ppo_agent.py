@@ -53,6 +53,10 @@ def test_ppo_agent__clear_errors(model_path, hall_office, tmp_path):
         agent.act(obs, info)
     with pytest.raises(ConfigError, match="not found"):
         make_agent(f"ppo:{tmp_path / 'none.zip'}", env)
+    corrupt = tmp_path / "corrupt.zip"
+    corrupt.write_bytes(b"PK\x03\x04 not a model")
+    with pytest.raises(ConfigError, match="not a stable-baselines3 PPO model"):
+        make_agent(f"ppo:{corrupt}", env)
 
 
 def test_ppo_config__rejects_bad_values():

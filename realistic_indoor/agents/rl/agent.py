@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import zipfile
 from pathlib import Path
 from typing import Any
 
@@ -29,7 +30,13 @@ def load_model(path: str | Path) -> Any:
             raise ConfigError(f"PPO model {str(path)!r} not found (train one with experiments/train_ppo.py)")
         torch, sb3 = require_rl()
         torch.set_num_threads(1)
-        _MODELS[key] = sb3.PPO.load(path, device="cpu")
+        try:
+            _MODELS[key] = sb3.PPO.load(path, device="cpu")
+        except (ValueError, KeyError, OSError, RuntimeError, zipfile.BadZipFile) as e:
+            raise ConfigError(
+                f"{str(path)!r} is not a stable-baselines3 PPO model ({type(e).__name__}: {e}); "
+                "train one with experiments/train_ppo.py"
+            ) from None
     return _MODELS[key]
 
 

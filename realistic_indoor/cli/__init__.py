@@ -40,22 +40,10 @@ def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 1 user error, 2 usage error)."""
     parser = build_parser()
     args = parser.parse_args(argv)
-    warnings.showwarning = _one_line_warning
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
-    try:
-        return int(args.func(args) or 0)
-    except RealisticIndoorError as e:
-        print(f"realistic-indoor {args.command}: error: {e}", file=sys.stderr)
-        return 1
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return 130
-    except BrokenPipeError:
-        # The reader of our output went away (e.g. `| head`): not an error of ours.
-        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
-        return 0
+    return run_script(lambda: args.func(args), f"realistic-indoor {args.command}")
 
 
 def run_script(main_fn: Callable[[], int | None], name: str) -> int:
@@ -71,7 +59,7 @@ def run_script(main_fn: Callable[[], int | None], name: str) -> int:
 
     Returns:
         The exit code: ``main_fn``'s (0 when it returns ``None``), 1 on a user error, 130 when
-        interrupted.
+        interrupted, 0 when the reader of the output went away (``| head``).
     """
     warnings.showwarning = _one_line_warning
     try:
@@ -82,6 +70,10 @@ def run_script(main_fn: Callable[[], int | None], name: str) -> int:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # The reader of our output went away (e.g. `| head`): not an error of ours.
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
+        return 0
 
 
 def _one_line_warning(message, category, filename, lineno, file=None, line=None) -> None:

@@ -10,13 +10,18 @@ _ENTRY_POINTS = {
     "Explore": "realistic_indoor.envs.explore:ExploreEnv",
     "Search": "realistic_indoor.envs.search:SearchEnv",
 }
-_MAX_STEPS = {"office": 6000, "school": 6000, "house": 1000, "random": 6000}
-"""Control steps (0.2 s each at 5 Hz) per episode, by building type, for buildings of the
-generator's default size. Measured with the nearest-frontier explorer (``FrontierAgent``), which
-needed at most 4,957 steps to observe 90% of default offices (20 seeds), 4,413 on schools and
-309 on houses (10 seeds each): each limit leaves it about 20% or more to spare. Random maps
-have the offices' floor area and get their limit, so the two compare at equal time (the
-explorer needs at most 2,569 steps there)."""
+_MAX_STEPS = {
+    "Explore": {"office": 6000, "school": 6000, "house": 1000, "random": 6000},
+    "Search": {"office": 12000, "school": 15000, "house": 1000, "random": 12000},
+}
+"""Control steps (0.2 s each at 5 Hz) per episode, by task and building type, for buildings of
+the generator's default size. Measured with the nearest-frontier explorer (``FrontierAgent``).
+Exploration: it needed at most 4,957 steps to observe 90% of default offices (20 seeds), 4,413
+on schools and 309 on houses (10 seeds each). Search, sweeping the floor with the victim sensor:
+it needed at most 9,493 steps to find the 3 victims of default offices (10 seeds), 11,560 on
+schools (6 seeds) and 462 on houses (10 seeds). Each limit leaves it about 20% or more to spare.
+Random maps have the offices' floor area and get their limits, so the two compare at equal time
+(the explorer needs at most 2,569 and 5,646 steps there)."""
 
 
 class EnvPreset(NamedTuple):
@@ -39,7 +44,7 @@ class EnvPreset(NamedTuple):
 def _presets() -> dict[str, EnvPreset]:
     out = {}
     for task, entry_point in _ENTRY_POINTS.items():
-        for building_type, max_steps in _MAX_STEPS.items():
+        for building_type, max_steps in _MAX_STEPS[task].items():
             env_id = f"{building_type.capitalize()}{task}-v0"
             kwargs = {"building_type": building_type, "max_steps": max_steps}
             out[env_id] = EnvPreset(env_id, entry_point, kwargs, max_steps)

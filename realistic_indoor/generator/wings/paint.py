@@ -175,31 +175,24 @@ def _junction(sk: Skeleton, X: _Bands, Y: _Bands, grid: dict[Cell, Tag], node: t
     xs = (X.index[("L", i)], X.index[("C", i)], X.index[("R", i)])
     ys = (Y.index[("L", j)], Y.index[("C", j)], Y.index[("R", j)])
 
-    def is_corridor(c: Cell) -> bool:
-        return grid.get(c, ("",))[0] == "cor"
+    def give(cells: tuple[Cell, Cell, Cell], first: str, last: str, tag: Tag) -> None:
+        """Hand a row of three block cells to a bay.
+
+        The ends go on the sides the junction opens to (``first``, ``last``) when the middle
+        cell is corridor; otherwise all three go, if the junction opens to either side.
+        """
+        if grid.get(cells[1], ("",))[0] == "cor":
+            for cell, side in ((cells[0], first), (cells[2], last)):
+                if side in dirs:
+                    grid.setdefault(cell, tag)
+        elif first in dirs or last in dirs:
+            for cell in cells:
+                grid.setdefault(cell, tag)
 
     for dy, kind in ((2, "HT"), (0, "HB")):
-        west, mid, east = (xs[0], ys[dy]), (xs[1], ys[dy]), (xs[2], ys[dy])
-        tag = ("bay", kind, j)
-        if is_corridor(mid):
-            if "W" in dirs:
-                grid.setdefault(west, tag)
-            if "E" in dirs:
-                grid.setdefault(east, tag)
-        elif "W" in dirs or "E" in dirs:
-            for c in (west, mid, east):
-                grid.setdefault(c, tag)
+        give(((xs[0], ys[dy]), (xs[1], ys[dy]), (xs[2], ys[dy])), "W", "E", ("bay", kind, j))
     for dx, kind in ((0, "VL"), (2, "VR")):
-        south, mid, north = (xs[dx], ys[0]), (xs[dx], ys[1]), (xs[dx], ys[2])
-        tag = ("bay", kind, i)
-        if is_corridor(mid):
-            if "S" in dirs:
-                grid.setdefault(south, tag)
-            if "N" in dirs:
-                grid.setdefault(north, tag)
-        elif "N" in dirs or "S" in dirs:
-            for c in (south, mid, north):
-                grid.setdefault(c, tag)
+        give(((xs[dx], ys[0]), (xs[dx], ys[1]), (xs[dx], ys[2])), "S", "N", ("bay", kind, i))
     for c in ((xs[0], ys[1]), (xs[2], ys[1]), (xs[1], ys[0]), (xs[1], ys[2])):
         grid.setdefault(c, ("end", i, j))
 

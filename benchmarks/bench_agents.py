@@ -22,7 +22,7 @@ import argparse
 import math
 import statistics
 
-from realistic_indoor.evaluation import evaluate, wilson
+from realistic_indoor.evaluation import EpisodeResult, evaluate, wilson
 
 TARGET_SHARE = 0.9
 
@@ -64,12 +64,10 @@ def main(argv: list[str] | None = None) -> None:
         print(f"\nfrontier {goal} in {share:.0%} of seeds: {verdict} the target of {TARGET_SHARE:.0%}")
 
 
-def _steps_to_goal(result) -> int | None:
+def _steps_to_goal(result: EpisodeResult) -> int | None:
     """Steps until the episode's goal (90% coverage; in search, every victim found), or None."""
     seconds = result.time_to_all_victims_s if result.victims_total else result.time_to_target_s
-    if seconds is None or not math.isfinite(seconds):
-        return None
-    return round(seconds / result.dt_s)
+    return round(seconds / result.dt_s) if math.isfinite(seconds) else None
 
 
 if __name__ == "__main__":

@@ -49,7 +49,7 @@ def main(argv: list[str] | None = None) -> int:
 def run_script(main_fn: Callable[[], int | None], name: str) -> int:
     """Run a script's ``main`` as the command line runs a subcommand: user errors on one line.
 
-    For the scripts of ``experiments/`` and ``benchmarks/``: a bad argument or file (any
+    For :func:`main` and the scripts of ``experiments/``: a bad argument or file (any
     :class:`~realistic_indoor.errors.RealisticIndoorError`) prints ``NAME: error: ...`` and
     returns 1 instead of a traceback; anything else is a bug and keeps its traceback.
 

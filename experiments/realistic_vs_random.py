@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import shlex
 import sys
 import tempfile
@@ -135,9 +136,9 @@ def main(argv: list[str] | None = None) -> int:
     meta = {
         "command": command,
         "commit": _commit(),
-        "agents": agents,
+        "agents": {label: _portable(name) for label, name in agents.items()},
         "episodes": episodes,
-        "real_plans": [s.plan for s in real],
+        "real_plans": [_portable(s.plan) for s in real],
     }
     write_results(results, out / "realistic_vs_random", meta)
     report = analyse(results, list(agents), command, episodes, len(real))
@@ -192,6 +193,11 @@ def ensure_models(folder: Path, preset: str, small: bool) -> dict[str, str]:
             )
         names[label] = f"ppo:{path}"
     return names
+
+
+def _portable(text: str) -> str:
+    """``text`` with absolute paths inside the project's parent folder made relative to the project."""
+    return text.replace(f"{ROOT}{os.sep}", "").replace(f"{ROOT.parent}{os.sep}", f"..{os.sep}")
 
 
 def env_sets(setup: Setup, plans_per_set: int | None) -> tuple[list, list]:

@@ -1,0 +1,56 @@
+"""The repository itself: what a fresh clone gets must work on any machine."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# Absolute paths that only exist on the machine where a file was written.
+MACHINE_PATH = re.compile(rb"(?<![\w.])(/work/|/home/\w|/root/|/Users/\w|[A-Z]:\\\\Users)")
+
+
+def _tracked() -> list[tuple[str, str]]:
+    """``(mode, path)`` of every tracked file."""
+    if shutil.which("git") is None or not (ROOT / ".git").exists():
+        pytest.skip("not a git checkout (installed from a source distribution)")
+    out = subprocess.run(
+        ["git", "ls-files", "-s", "-z"], cwd=ROOT, capture_output=True, check=True
+    ).stdout.decode()
+    rows = [entry.split("\t", 1) for entry in out.split("\0") if entry]
+    return [(meta.split()[0], path) for meta, path in rows]
+
+
+def test_repository__tracks_no_symbolic_link():
+    links = [path for mode, path in _tracked() if mode == "120000"]
+    assert links == [], f"symbolic links break a fresh clone: {links}"
+
+
+def test_repository__tracks_no_virtual_environment():
+    venvs = [p for _, p in _tracked() if p.split("/")[0] in (".venv", "venv") or "/site-packages/" in p]
+    assert venvs == []
+
+
+def test_repository__text_files_name_no_machine_path():
+    found = []
+    for _, path in _tracked():
+        if path.endswith((".zip", ".png", ".pgm")) or path == "tests/test_repository.py":
+            continue
+        data = (ROOT / path).read_bytes()
+        found += [f"{path}: {m.group(0).decode()}" for m in MACHINE_PATH.finditer(data)]
+    assert found == [], f"machine-specific paths: {found[:5]}"
+
+
+def test_repository__gitignore_ignores_venv_folder_and_link(tmp_path):
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed")
+    for name in (".venv", ".venv/pyvenv.cfg", "runs/x.json"):
+        out = subprocess.run(
+            ["git", "check-ignore", "--no-index", "-q", name], cwd=ROOT, capture_output=True
+        )
+        assert out.returncode == 0, f"{name} is not ignored"

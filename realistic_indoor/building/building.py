@@ -119,6 +119,12 @@ class Building:
 
         return check_building(self, **kwargs)
 
+    def _type_text(self) -> str:
+        kind = self.building_type.value
+        if self.metadata.get("generator") == "random":
+            return f"{kind} (random baseline map, World Generator rules)"
+        return kind
+
     def summary(self) -> str:
         """A few human-readable lines: type, rooms by label, area, doors."""
         counts = self.label_counts()
@@ -126,7 +132,7 @@ class Building:
         x0, y0, x1, y1 = self.bounds
         return "\n".join(
             [
-                f"type: {self.building_type.value}",
+                f"type: {self._type_text()}",
                 f"rooms: {len(self.rooms)} ({by_label})",
                 f"area: {self.area:.1f} m2 in a {x1 - x0:.1f} m x {y1 - y0:.1f} m footprint",
                 f"doors: {len(self.doors)} ({len(self.entrances)} exterior)",

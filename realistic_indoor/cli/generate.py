@@ -52,12 +52,24 @@ def _generator(args: argparse.Namespace):
     if args.width is not None or args.height is not None:
         if args.type != "random" or args.width is None or args.height is None:
             raise ConfigError("--width and --height go together, and only with --type random")
+        _check_grid_size(args.width, args.height)
         options = {"width_units": args.width, "height_units": args.height}
     if args.model:
         if args.type == "random":
             raise ConfigError("--model drives the realistic generators, not --type random")
         options["model"] = _read_model(Path(args.model))
     return make_generator(args.type, args.area, **options)
+
+
+def _check_grid_size(width: int, height: int) -> None:
+    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.generator.random_grid import CELL_M, MAX_UNITS, MIN_UNITS
+
+    for option, value in (("--width", width), ("--height", height)):
+        if not MIN_UNITS <= value <= MAX_UNITS:
+            raise ConfigError(
+                f"{option} counts {CELL_M:g} m grid cells, from {MIN_UNITS} to {MAX_UNITS}; got {value}"
+            )
 
 
 def _read_model(path: Path):
@@ -72,6 +84,8 @@ def _read_model(path: Path):
         raise ConfigError(f"{path}: cannot read the model ({e.strerror or e})") from None
     except json.JSONDecodeError as e:
         raise ConfigError(f"{path}: the model is not valid JSON ({e})") from None
+    except ConfigError as e:
+        raise ConfigError(f"{path}: {e}") from None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -82,12 +96,25 @@ def run(args: argparse.Namespace) -> int:
     if args.count is None:
         if args.out_dir:
             raise ConfigError("--out-dir goes with --count; for one building use -o FILE")
+        _check_outputs(args)
         return _one(gen, args)
     if args.count < 1:
         raise ConfigError(f"--count must be at least 1, not {args.count}")
     if not args.out_dir or args.output:
         raise ConfigError("--count writes one file per building into --out-dir DIR (not -o)")
     return _many(gen, args)
+
+
+def _check_outputs(args: argparse.Namespace) -> None:
+    """Refuse unwritable ``-o`` and ``--png`` paths before anything is generated."""
+    from realistic_indoor.files import check_output_path
+    from realistic_indoor.io import format_of
+
+    if args.output:
+        format_of(args.output)
+        check_output_path(args.output, "-o")
+    if args.png:
+        check_output_path(args.png, "--png", (".png", ".svg"))
 
 
 def _one(gen, args: argparse.Namespace) -> int:
@@ -108,12 +135,13 @@ def _many(gen, args: argparse.Namespace) -> int:
     from tqdm import tqdm
 
     from realistic_indoor.errors import ConfigError
+    from realistic_indoor.files import check_output_dir
     from realistic_indoor.generator import generate_from
     from realistic_indoor.io import format_of, save
 
     if args.png:
         raise ConfigError("--png draws one building; with --count use --format png (or svg) for pictures")
-    out = Path(args.out_dir)
+    out = check_output_dir(args.out_dir, "--out-dir")
     ext = "." + args.format.lstrip(".")
     format_of(f"x{ext}")
     first = args.seed if args.seed is not None else 0

@@ -108,15 +108,26 @@ def _reference(args: argparse.Namespace):
     return load_plan_set(ref)
 
 
+def _check_outputs(args: argparse.Namespace) -> None:
+    """Refuse unwritable ``-o`` and ``--plot`` paths before the sets are read."""
+    from realistic_indoor.files import check_output_path
+    from realistic_indoor.validator.plot import PLOT_SUFFIXES
+
+    if args.output:
+        check_output_path(args.output, "-o")
+    if args.plot:
+        check_output_path(args.plot, "--plot", PLOT_SUFFIXES)
+
+
 def run(args: argparse.Namespace) -> int:
     """Load the sets, compare them, print the report, draw the figure."""
-    from pathlib import Path
-
+    from realistic_indoor.files import write_text
     from realistic_indoor.validator.compare import compare_sets
     from realistic_indoor.validator.plan_sets import load_plan_set
     from realistic_indoor.validator.report import render_comparison
 
     names = _names(args)
+    _check_outputs(args)
     sets = [load_plan_set(spec, name) for spec, name in zip(args.sets, names, strict=True)]
     if len(sets) > 6 and all(len(s) == 1 for s in sets) and args.labels is None:
         print(
@@ -135,8 +146,7 @@ def run(args: argparse.Namespace) -> int:
     )
     text = render_comparison(comparison, args.format, worst=args.worst)
     if args.output:
-        Path(args.output).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.output).write_text(text, encoding="utf-8")
+        write_text(args.output, text)
         print(f"wrote {args.output}", file=sys.stderr)
     else:
         sys.stdout.write(text)

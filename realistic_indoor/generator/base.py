@@ -44,9 +44,9 @@ def check_area(kind: str, area_m2: object, low: float, high: float) -> float:
     if not math.isfinite(area) or area <= 0:
         raise ConfigError(f"{kind} area must be a positive number of square metres, not {area_m2!r}")
     if area < low:
-        raise ConfigError(f"a {kind} of {area:g} m2 is too small: the smallest is {low:g} m2")
+        raise ConfigError(f"{kind} area {area:g} m2 is too small: the smallest is {low:g} m2")
     if area > high:
-        raise ConfigError(f"a {kind} of {area:g} m2 is too large: the largest is {high:g} m2")
+        raise ConfigError(f"{kind} area {area:g} m2 is too large: the largest is {high:g} m2")
     return area
 
 

@@ -8,6 +8,7 @@ from typing import Any
 
 from realistic_indoor.building import Building, Door, Room
 from realistic_indoor.errors import PlanFormatError
+from realistic_indoor.files import write_text
 
 __all__ = ["SCHEMA", "SCHEMA_VERSION", "dumps", "from_dict", "loads", "read", "to_dict", "write"]
 
@@ -98,5 +99,4 @@ def read(path: str | Path) -> Building:
 
 def write(b: Building, path: str | Path) -> list[Path]:
     """Write a building to a JSON file."""
-    Path(path).write_text(dumps(b) + "\n", encoding="utf-8")
-    return [Path(path)]
+    return [write_text(path, dumps(b) + "\n")]

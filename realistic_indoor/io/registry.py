@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.errors import PlanFormatError, RealisticIndoorError
+from realistic_indoor.files import check_output_path
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
@@ -72,13 +73,17 @@ def load(path: str | Path, fmt: str | None = None, **options: Any) -> Building:
 def save(building: Building, path: str | Path, fmt: str | None = None, **options: Any) -> list[Path]:
     """Write ``building`` to ``path`` in the format its ending names (or ``fmt``).
 
+    The file is written whole or not at all: a failed write leaves a previous file intact.
+
     Returns:
         The files written (a ROS map writes an image and a YAML file).
+
+    Raises:
+        RealisticIndoorError: If the format is unknown, ``path`` is a folder or its folder
+            cannot be written.
     """
-    path = Path(path)
     fmt = format_of(path, fmt)
-    if path.parent and not path.parent.exists():
-        path.parent.mkdir(parents=True, exist_ok=True)
+    path = check_output_path(path, "output")
     written = _module(fmt).write(building, path, **options)
     return list(written) if written else [path]
 

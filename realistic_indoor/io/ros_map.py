@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from realistic_indoor.files import write_bytes, write_text
 from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
     DEFAULT_RESOLUTION_M,
@@ -100,8 +101,8 @@ def write(
     image_path, yaml_path = path.with_name(path.stem + ".pgm"), path.with_name(path.stem + ".yaml")
     image = map_image(raster)
     header = f"P5\n{image.shape[1]} {image.shape[0]}\n255\n".encode("ascii")
-    image_path.write_bytes(header + image.tobytes())
+    write_bytes(image_path, header + image.tobytes())
     source = str(building.metadata.get("source") or building.metadata.get("generator") or "a building")
     comment = f"ROS map_server map of {' '.join(source.split())}, written by realistic-indoor"
-    yaml_path.write_text(map_yaml(raster, image_path.name, comment), encoding="utf-8")
+    write_text(yaml_path, map_yaml(raster, image_path.name, comment))
     return [image_path, yaml_path]

@@ -29,6 +29,7 @@ import numpy as np
 
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
 from realistic_indoor.errors import ConfigError, PlanFormatError
+from realistic_indoor.files import atomic_path
 from realistic_indoor.io.floorplan.xmlfile import parse_root
 
 __all__ = ["DOOR_WIDTH_M", "GRID_M", "STOCK_MODULES", "LossyExportWarning", "read", "write"]
@@ -485,4 +486,5 @@ def _write_xml(path, name, building, rects, placed, shape) -> None:
             attrs = {"x": str(rows - max(r, q)), "y": str(c), "direction": "0"}
         ET.SubElement(root, "door", attrs)
     ET.indent(root, space="  ")
-    ET.ElementTree(root).write(path, encoding="UTF-8", xml_declaration=True)
+    with atomic_path(path) as tmp:
+        ET.ElementTree(root).write(tmp, encoding="UTF-8", xml_declaration=True)

@@ -172,8 +172,16 @@ class BuildingTypeModel:
                 structures=LocalStructures(**data.get("structures", {})),
                 source=str(data.get("source", "")),
             )
-        except (KeyError, TypeError) as e:
-            raise ConfigError(f"malformed building-type model: {e}") from None
+        except KeyError as e:
+            raise ConfigError(
+                f"malformed building-type model: no field {e}; a model file is what "
+                "BuildingTypeModel.to_dict() writes (see fit_model in docs/generator.md)"
+            ) from None
+        except (AttributeError, TypeError) as e:
+            raise ConfigError(
+                f"malformed building-type model ({e}); a model file is what BuildingTypeModel.to_dict() "
+                "writes (see fit_model in docs/generator.md)"
+            ) from None
 
 
 def _lognormal(rng: np.random.Generator, mean: float, std: float) -> float:

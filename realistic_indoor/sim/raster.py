@@ -14,7 +14,7 @@ from realistic_indoor.errors import ConfigError
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
-__all__ = ["FREE", "OUTSIDE", "WALL", "OccupancyRaster", "rasterize"]
+__all__ = ["FREE", "MAX_RASTER_CELLS", "OUTSIDE", "WALL", "OccupancyRaster", "rasterize"]
 
 FREE, WALL, OUTSIDE = 0, 1, 2
 """Cell values (uint8): floor inside a room or doorway, wall, outside the building."""
@@ -22,6 +22,8 @@ FREE, WALL, OUTSIDE = 0, 1, 2
 DEFAULT_RESOLUTION_M = 0.05
 DEFAULT_WALL_THICKNESS_M = 0.1
 DEFAULT_MARGIN_M = 0.5
+MAX_RASTER_CELLS = 100_000_000
+"""Largest grid :func:`rasterize` makes (cells): about 1 GB of memory while it is filled."""
 _EPS = 1e-6
 _WALL_WEIGHT = 1 << 16  # a wall cell outweighs any number of overlapping rooms and door cuts
 
@@ -129,7 +131,8 @@ def rasterize(
         scanline fill of the rooms and of one rectangle per wall segment).
 
     Raises:
-        ConfigError: If a size is out of range or the building has no room.
+        ConfigError: If a size is out of range, the grid would exceed :data:`MAX_RASTER_CELLS`
+            or the building has no room.
     """
     _check_args(building, resolution_m, wall_thickness_m, margin_m)
     xmin, ymin, xmax, ymax = building.bounds
@@ -137,6 +140,7 @@ def rasterize(
     y0 = math.floor((ymin - margin_m) / resolution_m + _EPS) * resolution_m
     w = math.ceil((xmax + margin_m - x0) / resolution_m - _EPS)
     h = math.ceil((ymax + margin_m - y0) / resolution_m - _EPS)
+    _check_size(w, h, resolution_m)
     origin = np.array([x0, y0])
 
     rings = [np.asarray(r.outline, dtype=float) for r in building.rooms]
@@ -155,6 +159,16 @@ def rasterize(
     grid[cover >= _WALL_WEIGHT] = WALL
     grid.setflags(write=False)
     return OccupancyRaster(grid, float(resolution_m), (float(x0), float(y0)))
+
+
+def _check_size(w: int, h: int, resolution_m: float) -> None:
+    """Refuse a grid larger than :data:`MAX_RASTER_CELLS`, naming a resolution that fits."""
+    if w * h > MAX_RASTER_CELLS:
+        coarser = resolution_m * math.sqrt(w * h / MAX_RASTER_CELLS)
+        raise ConfigError(
+            f"a grid of {w:,} x {h:,} cells at resolution {resolution_m:g} m exceeds the limit of "
+            f"{MAX_RASTER_CELLS:,} cells; use a resolution of at least {coarser:.3g} m"
+        )
 
 
 def _check_args(building: Building, resolution_m: float, thickness_m: float, margin_m: float) -> None:

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.files import atomic_path, check_output_path
 from realistic_indoor.validator.connectivity import CONNECTIVITY_METRICS
 from realistic_indoor.validator.features import all_room_features
 
@@ -23,7 +24,10 @@ if TYPE_CHECKING:
     from realistic_indoor.validator.compare import Comparison
     from realistic_indoor.validator.features import RoomFeatures
 
-__all__ = ["comparison_figure", "plot_comparison"]
+__all__ = ["PLOT_SUFFIXES", "comparison_figure", "plot_comparison"]
+
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+"""File endings :func:`plot_comparison` writes (the format follows the ending)."""
 
 _LABELS = tuple(SemanticLabel)
 _REF_STYLE = {
@@ -244,7 +248,7 @@ def plot_comparison(c: Comparison, path: str | Path, dpi: int = 110) -> Path:
     Returns:
         The file written.
     """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    comparison_figure(c).savefig(path, dpi=dpi)
+    path = check_output_path(path, "--plot", PLOT_SUFFIXES)
+    with atomic_path(path) as tmp:
+        comparison_figure(c).savefig(tmp, dpi=dpi)
     return path

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from realistic_indoor.agents.rl.config import PPOConfig
 from realistic_indoor.agents.rl.envs import make_vec_env
+from realistic_indoor.files import atomic_path, write_text
 
 __all__ = ["TrainResult", "require_rl", "train_ppo"]
 
@@ -99,7 +100,8 @@ def train_ppo(config: PPOConfig, out_path: str | Path, log: Callable[[str], obje
     finally:
         venv.close()
     seconds = time.perf_counter() - start
-    model.save(out_path)
+    with atomic_path(out_path) as tmp:
+        model.save(tmp)
     recent = progress.coverages[-50:]
     result = TrainResult(
         out_path,
@@ -116,7 +118,7 @@ def train_ppo(config: PPOConfig, out_path: str | Path, log: Callable[[str], obje
         "last_coverage": result.last_coverage,
         "curve": curve,
     }
-    out_path.with_suffix(".json").write_text(json.dumps(meta, indent=1) + "\n", encoding="utf-8")
+    write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
     return result
 
 

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.files import atomic_path
 
 __all__ = ["PX_PER_M", "write"]
 
@@ -54,7 +55,8 @@ def write(building: Building, path: str | Path) -> list[Path]:
     for room in building.rooms:
         spaces.append(_space(room, building.doors_of[room.id], px, used))
     ET.indent(root, space="  ")
-    ET.ElementTree(root).write(path, encoding="UTF-8", xml_declaration=True)
+    with atomic_path(path) as tmp:
+        ET.ElementTree(root).write(tmp, encoding="UTF-8", xml_declaration=True)
     return [path]
 
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.files import atomic_path
 from realistic_indoor.io.render.draw import draw_plan, plan_limits
 
 if TYPE_CHECKING:
@@ -16,7 +17,7 @@ if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
     from realistic_indoor.io.render.style import PlanStyle
 
-__all__ = ["plan_figure", "render_array", "write"]
+__all__ = ["MAX_PICTURE_PIXELS", "plan_figure", "render_array", "write"]
 
 PAD_IN = 0.15
 TITLE_IN = 0.5
@@ -25,6 +26,8 @@ LEGEND_IN = 1.6
 MIN_LEGEND_HEIGHT_IN = 2.4
 MIN_TITLED_WIDTH_IN = 4.6
 SUFFIXES = (".png", ".svg")
+MAX_PICTURE_PIXELS = 64_000_000
+"""Largest picture drawn (pixels, width times height): 8,000 x 8,000, about 250 MB while drawn."""
 
 
 def plan_figure(
@@ -54,7 +57,8 @@ def plan_figure(
         A matplotlib ``Figure`` on an Agg canvas (no display needed; not registered with pyplot).
 
     Raises:
-        ConfigError: If ``size_in`` or ``dpi`` is not positive.
+        ConfigError: If ``size_in`` or ``dpi`` is not positive, or the picture would exceed
+            :data:`MAX_PICTURE_PIXELS`.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
@@ -70,6 +74,7 @@ def plan_figure(
     fig_h = top + plan_h + bottom
     fig_w = max(fig_w, MIN_TITLED_WIDTH_IN if title else 0.0)
     fig_h = max(fig_h, top + MIN_LEGEND_HEIGHT_IN if legend else 0.0)
+    _check_pixels(fig_w * dpi, fig_h * dpi)
     fig = Figure(figsize=(fig_w, fig_h), dpi=dpi)
     FigureCanvasAgg(fig)
     ax = fig.add_axes((PAD_IN / fig_w, (fig_h - top - plan_h) / fig_h, plan_w / fig_w, plan_h / fig_h))
@@ -83,6 +88,14 @@ def plan_figure(
         style=style,
     )
     return fig
+
+
+def _check_pixels(width_px: float, height_px: float) -> None:
+    if width_px * height_px > MAX_PICTURE_PIXELS:
+        raise ConfigError(
+            f"a picture of {width_px:,.0f} x {height_px:,.0f} pixels exceeds the limit of "
+            f"{MAX_PICTURE_PIXELS:,} pixels; use a smaller size (inches) or dpi"
+        )
 
 
 def render_array(building: Building, **options: Any) -> np.ndarray:
@@ -127,6 +140,6 @@ def write(building: Building, path: str | Path, **options: Any) -> list[Path]:
     fig = plan_figure(building, **options)
     fmt = suffix[1:]
     metadata = {"Date": None} if fmt == "svg" else {}
-    with matplotlib.rc_context({"svg.hashsalt": "realistic-indoor"}):
-        fig.savefig(path, format=fmt, metadata=metadata)
+    with matplotlib.rc_context({"svg.hashsalt": "realistic-indoor"}), atomic_path(path) as tmp:
+        fig.savefig(tmp, format=fmt, metadata=metadata)
     return [path]

@@ -16,9 +16,10 @@ episodes on 2 cores)::
 
     .venv/bin/python experiments/realistic_vs_random.py
 
-writes ``experiments/results/realistic_vs_random.md`` (tables and findings),
+writes ``runs/realistic_vs_random/realistic_vs_random.md`` (tables and findings),
 ``realistic_vs_random.png`` (coverage AUC per agent and set), ``realistic_vs_random_curves.png``
-and the raw results in ``experiments/results/realistic_vs_random/``. ``--small`` runs the whole
+and the raw results in ``runs/realistic_vs_random/realistic_vs_random/``; ``--out
+experiments/results`` regenerates the committed results. ``--small`` runs the whole
 pipeline on tiny buildings in seconds (the test suite does).
 """
 
@@ -37,6 +38,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 REAL_PLANS = ROOT.parent / "shared" / "data" / "real_floorplans"
 RESULTS = ROOT / "experiments" / "results"
+RUNS = ROOT / "runs" / "realistic_vs_random"
 
 BASELINES = {
     "random": "random",
@@ -95,13 +97,17 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument(
         "--out",
         default=None,
-        help="output folder (default experiments/results; with --small a new temporary one)",
+        help="output folder (default runs/realistic_vs_random; with --small a new temporary one); "
+        "--out experiments/results regenerates the committed results",
     )
     p.add_argument("--episodes", type=int, default=None, help="seeds per generated set (default 10)")
     p.add_argument("--plans", type=int, default=None, help="real plans per set (default all)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: one per core)")
     p.add_argument(
-        "--models", default=None, help="folder of ppo_random.zip and ppo_realistic.zip (default: --out)"
+        "--models",
+        default=None,
+        help="folder of ppo_random.zip and ppo_realistic.zip (default: the committed models in "
+        "experiments/results; with --small, --out); missing models are trained there",
     )
     p.add_argument("--no-ppo", action="store_true", help="leave the PPO agents out")
     p.add_argument(
@@ -112,10 +118,11 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 def main(argv: list[str] | None = None) -> int:
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
+    from realistic_indoor.files import write_text
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
-    out = Path(args.out) if args.out else RESULTS
+    out = Path(args.out) if args.out else RUNS
     if args.small and not args.out:
         # A smoke run must not overwrite the committed results or leave smoke models there.
         out = Path(tempfile.mkdtemp(prefix="realistic_vs_random_small_"))
@@ -124,7 +131,8 @@ def main(argv: list[str] | None = None) -> int:
         return report_only(out)
     agents = dict(BASELINES)
     if not args.no_ppo:
-        agents |= ensure_models(Path(args.models) if args.models else out, setup.ppo_preset, args.small)
+        models = Path(args.models) if args.models else (out if args.small else RESULTS)
+        agents |= ensure_models(models, setup.ppo_preset, args.small)
     episodes = args.episodes or setup.episodes
     generated, real = env_sets(setup, args.plans if args.plans is not None else setup.plans_per_set)
     tasks = make_tasks(list(agents.values()), generated, episodes) if generated else []
@@ -142,7 +150,7 @@ def main(argv: list[str] | None = None) -> int:
     }
     write_results(results, out / "realistic_vs_random", meta)
     report = analyse(results, list(agents), command, episodes, len(real))
-    (out / "realistic_vs_random.md").write_text(report, encoding="utf-8")
+    write_text(out / "realistic_vs_random.md", report)
     draw(results, list(agents), out)
     print(report)
     return 0
@@ -151,12 +159,13 @@ def main(argv: list[str] | None = None) -> int:
 def report_only(out: Path) -> int:
     """Write the report and figures again from ``out/realistic_vs_random/results.json``."""
     from realistic_indoor.evaluation import read_results
+    from realistic_indoor.files import write_text
 
     results, meta = read_results(out / "realistic_vs_random" / "results.json")
     report = analyse(
         results, list(meta["agents"]), meta["command"], meta["episodes"], len(meta["real_plans"])
     )
-    (out / "realistic_vs_random.md").write_text(report, encoding="utf-8")
+    write_text(out / "realistic_vs_random.md", report)
     draw(results, list(meta["agents"]), out)
     print(report)
     return 0
@@ -381,6 +390,7 @@ def draw(results: list, agents: list[str], out: Path) -> None:
 
     from realistic_indoor.evaluation import summarize
     from realistic_indoor.evaluation.figures import plot_coverage
+    from realistic_indoor.files import atomic_path
 
     rows = {(r["agent"], r["group"]): r for r in summarize(results)}
     groups = list(dict.fromkeys(r.group for r in results))
@@ -398,7 +408,8 @@ def draw(results: list, agents: list[str], out: Path) -> None:
     ax.legend(fontsize=7, ncol=2)
     ax.grid(axis="y", alpha=0.3)
     fig.tight_layout()
-    fig.savefig(out / "realistic_vs_random.png", dpi=120)
+    with atomic_path(out / "realistic_vs_random.png") as tmp:
+        fig.savefig(tmp, dpi=120)
     plt.close(fig)
     plot_coverage(results, out / "realistic_vs_random_curves.png", "time")
 

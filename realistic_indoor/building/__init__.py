@@ -4,6 +4,7 @@ from realistic_indoor.building.building import Building
 from realistic_indoor.building.check import Finding, InvalidBuildingError, check_building
 from realistic_indoor.building.door import Door
 from realistic_indoor.building.labels import (
+    CIRCULATION_LABELS,
     ROOM_LABELS,
     BuildingType,
     SemanticLabel,
@@ -13,6 +14,7 @@ from realistic_indoor.building.labels import (
 from realistic_indoor.building.room import Room
 
 __all__ = [
+    "CIRCULATION_LABELS",
     "ROOM_LABELS",
     "Building",
     "BuildingType",

@@ -6,7 +6,7 @@ from enum import Enum
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["ROOM_LABELS", "BuildingType", "SemanticLabel", "parse_building_type", "parse_label"]
+__all__ = ["CIRCULATION_LABELS", "ROOM_LABELS", "BuildingType", "SemanticLabel", "parse_building_type", "parse_label"]
 
 
 class SemanticLabel(str, Enum):
@@ -30,6 +30,9 @@ ROOM_LABELS: tuple[SemanticLabel, ...] = (
     SemanticLabel.BIG,
 )
 """Labels of ordinary rooms, as opposed to the circulation spaces (corridor, hall)."""
+
+CIRCULATION_LABELS: tuple[SemanticLabel, ...] = (SemanticLabel.CORRIDOR, SemanticLabel.HALL)
+"""Labels of the circulation spaces: corridors and halls, through which people reach rooms."""
 
 
 class BuildingType(str, Enum):

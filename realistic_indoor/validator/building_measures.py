@@ -1,0 +1,189 @@
+"""Building-level measures: how a whole plan is organised, beyond its rooms one by one.
+
+Table 1 of the paper judges rooms; a user looking at a plan sees its shape first: whether the
+building is a compact block or thin wings around empty courts, how much of the floor is
+corridor, how many rooms there are for the floor area, how deep rooms lie behind doors. These
+measures are pure functions of a :class:`~realistic_indoor.building.Building`; their formulas
+are in docs/validator.md.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+from typing import TYPE_CHECKING
+
+import networkx as nx
+import numpy as np
+
+from realistic_indoor.building.labels import CIRCULATION_LABELS, ROOM_LABELS
+from realistic_indoor.validator.connectivity import core_rooms
+
+if TYPE_CHECKING:
+    from shapely.geometry.base import BaseGeometry
+
+    from realistic_indoor.building.building import Building
+
+__all__ = [
+    "BUILDING_MEASURES",
+    "CLOSING_M",
+    "FACADE_MIN_M",
+    "SHAFT_MAX_M2",
+    "BuildingMeasures",
+    "building_measures",
+    "footprint",
+]
+
+CLOSING_M = 0.25
+"""Gaps between room outlines up to twice this (m) are closed in the footprint (walls, slop)."""
+
+SHAFT_MAX_M2 = 25.0
+"""Holes of the footprint up to this area (m2) are filled: shafts and unlabelled spaces, not courts."""
+
+FACADE_MIN_M = 1.0
+"""Length of outline (m) a room must share with the footprint's boundary to have a facade."""
+
+_HECTARE_M2 = 10_000.0
+
+
+@dataclass(frozen=True)
+class BuildingMeasures:
+    """The building-level measures of one plan (see :data:`BUILDING_MEASURES` for each meaning).
+
+    Attributes:
+        footprint_fill: Floor area over the area of the footprint's convex hull, in ``(0, 1]``.
+        isoperimetric_quotient: ``4 pi A / P**2`` of the footprint (area ``A``, perimeter ``P``
+            of every boundary, courtyards included), 1 for a disc, ``pi / 4`` for a square.
+        aspect_ratio: Long over short side of the footprint's smallest enclosing rectangle, >= 1.
+        circulation_share: Area of corridors and halls over the floor area, in ``[0, 1]``.
+        rooms_per_hectare: Rooms (corridors and halls included) per 10,000 m2 of floor.
+        door_depth: Mean number of doors on the shortest path between two rooms (over the
+            pairs of rooms joined by doors; 0 for a single room).
+        door_depth_norm: ``door_depth`` divided by the square root of the number of rooms.
+        one_door_share: Share of ordinary rooms (small, medium, big) with exactly one door.
+        circulation_loops: Cycle rank of the corridor-and-hall network (independent loops:
+            edges minus nodes plus components of the graph of corridors and halls joined by
+            doors, parallel doors counted once).
+        core_facade_share: Share of core rooms (offices in offices, classrooms in schools,
+            bedrooms in houses) with a facade; ``nan`` when there are none.
+    """
+
+    footprint_fill: float
+    isoperimetric_quotient: float
+    aspect_ratio: float
+    circulation_share: float
+    rooms_per_hectare: float
+    door_depth: float
+    door_depth_norm: float
+    one_door_share: float
+    circulation_loops: int
+    core_facade_share: float
+
+    def as_dict(self) -> dict[str, float]:
+        """The measures by name, as floats."""
+        return {k: float(v) for k, v in asdict(self).items()}
+
+
+BUILDING_MEASURES: dict[str, str] = {
+    "footprint_fill": "floor area / convex hull area of the footprint",
+    "isoperimetric_quotient": "4 pi A / P^2 of the footprint",
+    "aspect_ratio": "long / short side of the footprint's enclosing rectangle",
+    "circulation_share": "corridor + hall area / floor area",
+    "rooms_per_hectare": "rooms per 10,000 m2 of floor",
+    "door_depth": "mean doors between two rooms",
+    "door_depth_norm": "mean doors between two rooms / sqrt(rooms)",
+    "one_door_share": "share of ordinary rooms with one door",
+    "circulation_loops": "independent loops of the corridor-and-hall network",
+    "core_facade_share": "share of core rooms with a facade",
+}
+"""Every building-level measure and what it is, in the order of :class:`BuildingMeasures`."""
+
+
+def footprint(building: Building) -> BaseGeometry:
+    """The building's footprint: the union of its room outlines.
+
+    Gaps between outlines narrower than ``2 * CLOSING_M`` are closed (real plans draw rooms up to
+    the faces of walls), and holes up to :data:`SHAFT_MAX_M2` are filled; larger holes are
+    courtyards and stay.
+
+    Raises:
+        ValueError: If the building has no room.
+    """
+    from shapely import Polygon, unary_union
+
+    if not building.rooms:
+        raise ValueError("a building without rooms has no footprint")
+    union = unary_union([r.polygon for r in building.rooms])
+    closed = union.buffer(CLOSING_M, join_style="mitre").buffer(-CLOSING_M, join_style="mitre")
+    if closed.is_empty:
+        closed = union
+    parts = [
+        Polygon(p.exterior, [h for h in p.interiors if Polygon(h).area > SHAFT_MAX_M2])
+        for p in getattr(closed, "geoms", [closed])
+    ]
+    return unary_union(parts)
+
+
+def building_measures(building: Building) -> BuildingMeasures:
+    """Every building-level measure of ``building``.
+
+    Raises:
+        ValueError: If the building has no room.
+    """
+    shape = footprint(building)
+    floor = sum(r.area for r in building.rooms)
+    depth = _door_depth(building)
+    return BuildingMeasures(
+        footprint_fill=floor / shape.convex_hull.area,
+        isoperimetric_quotient=4 * math.pi * shape.area / shape.length**2,
+        aspect_ratio=_aspect_ratio(shape),
+        circulation_share=sum(r.area for r in building.rooms if r.label in CIRCULATION_LABELS) / floor,
+        rooms_per_hectare=len(building.rooms) / (floor / _HECTARE_M2),
+        door_depth=depth,
+        door_depth_norm=depth / math.sqrt(len(building.rooms)),
+        one_door_share=_one_door_share(building),
+        circulation_loops=_circulation_loops(building),
+        core_facade_share=_core_facade_share(building, shape),
+    )
+
+
+def _aspect_ratio(shape: BaseGeometry) -> float:
+    rect = np.asarray(shape.minimum_rotated_rectangle.exterior.coords)
+    sides = np.hypot(*np.diff(rect[:3], axis=0).T)
+    return float(sides.max() / sides.min()) if sides.min() > 0 else math.inf
+
+
+def _door_depth(building: Building) -> float:
+    graph = nx.Graph(building.graph())
+    total, pairs = 0, 0
+    for _source, lengths in nx.all_pairs_shortest_path_length(graph):
+        total += sum(lengths.values())
+        pairs += len(lengths) - 1
+    return total / pairs if pairs else 0.0
+
+
+def _one_door_share(building: Building) -> float:
+    rooms = [r for r in building.rooms if r.label in ROOM_LABELS]
+    if not rooms:
+        return math.nan
+    return sum(len(building.doors_of[r.id]) == 1 for r in rooms) / len(rooms)
+
+
+def _circulation_loops(building: Building) -> int:
+    ids = [r.id for r in building.rooms if r.label in CIRCULATION_LABELS]
+    graph = nx.Graph(building.graph().subgraph(ids))
+    if graph.number_of_nodes() == 0:
+        return 0
+    components = nx.number_connected_components(graph)
+    return graph.number_of_edges() - graph.number_of_nodes() + components
+
+
+def _core_facade_share(building: Building, shape: BaseGeometry) -> float:
+    core = core_rooms(building)
+    if not core:
+        return math.nan
+    edge = shape.boundary.buffer(CLOSING_M)
+    on_facade = sum(
+        building.room(rid).polygon.exterior.intersection(edge).length >= FACADE_MIN_M for rid in core
+    )
+    return on_facade / len(core)

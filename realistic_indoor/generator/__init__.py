@@ -8,6 +8,7 @@ draw a new building per episode. :func:`generate` is the one-line convenience::
     gen = make_generator("school", area_m2=3000)
     b = gen(np.random.default_rng(7))
     b2 = regenerate(b, rooms=["r12", "r13"], seed=3)
+    twins = list(generate_like([("plan", real_plan)], "office"))   # same floor area as a plan
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import numpy as np
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, GENERATOR_NAMES, Generator
 from realistic_indoor.generator.house import HouseGenerator
+from realistic_indoor.generator.like import Twin, area_limits, generate_like
 from realistic_indoor.generator.random_grid import RandomGridGenerator
 from realistic_indoor.generator.regenerate import regenerate
 from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
@@ -35,8 +37,11 @@ __all__ = [
     "OfficeGenerator",
     "RandomGridGenerator",
     "SchoolGenerator",
+    "Twin",
+    "area_limits",
     "generate",
     "generate_from",
+    "generate_like",
     "make_generator",
     "regenerate",
 ]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-__all__ = ["ConfigError", "PlanFormatError", "RealisticIndoorError"]
+__all__ = ["ActionError", "ConfigError", "PlanFormatError", "RealisticIndoorError"]
 
 
 class RealisticIndoorError(ValueError):
@@ -31,3 +31,11 @@ class PlanFormatError(RealisticIndoorError):
 
 class ConfigError(RealisticIndoorError):
     """A configuration value or argument is invalid (unknown type, negative range, ...)."""
+
+
+class ActionError(RealisticIndoorError):
+    """An action given to an environment's ``step`` is not in its action space.
+
+    Raised for non-finite or wrongly shaped continuous actions and for discrete actions that
+    are not integers in range; the message names the action given and what is allowed.
+    """

@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from gymnasium import spaces
+
+from realistic_indoor.errors import ActionError
 
 __all__ = ["ACTION_TYPES", "DISCRETE_ACTIONS", "ActionMap"]
 
@@ -20,13 +24,19 @@ DISCRETE_ACTIONS: tuple[tuple[str, float, float], ...] = (
 )
 """The discrete action set: name, linear and angular velocity as fractions of the limits."""
 
+_NAMES = ", ".join(name for name, _, _ in DISCRETE_ACTIONS)
+
 
 class ActionMap:
     """The action space of an environment and the map from its actions to velocity commands.
 
     A continuous action ``a`` in ``Box(-1, 1, (2,))`` commands ``v = a[0] * max_speed_m_s`` and
-    ``w = a[1] * max_turn_rad_s`` (values outside ``[-1, 1]`` are clipped); a discrete action
-    ``k`` commands the ``k``-th entry of :data:`DISCRETE_ACTIONS` scaled the same way.
+    ``w = a[1] * max_turn_rad_s``. Finite values outside ``[-1, 1]`` are clipped to it (a
+    policy's raw Gaussian output is fine); NaN and infinities are refused, as is any shape
+    but ``(2,)``. A discrete action ``k`` commands the ``k``-th entry of
+    :data:`DISCRETE_ACTIONS` scaled the same way; ``k`` must be an integer in ``0..5`` (a
+    Python or NumPy integer, or a 0-d integer array); floats and booleans are refused rather
+    than rounded.
 
     Args:
         action_type: ``"continuous"`` or ``"discrete"``.
@@ -35,6 +45,7 @@ class ActionMap:
 
     Attributes:
         space: The Gymnasium action space.
+        discrete: Whether the actions are discrete.
     """
 
     def __init__(self, action_type: str, max_speed_m_s: float, max_turn_rad_s: float) -> None:
@@ -48,8 +59,70 @@ class ActionMap:
             self.space = spaces.Box(-1.0, 1.0, (2,), np.float32)
 
     def command(self, action: np.ndarray | int) -> tuple[float, float]:
-        """The velocity command ``(v m/s, w rad/s)`` of ``action``."""
+        """The velocity command of ``action``.
+
+        Args:
+            action: A continuous action (2 numbers, ``(linear, turn)`` in ``[-1, 1]``) or a
+                discrete action (an integer in ``0..5``).
+
+        Returns:
+            ``(v, w)``: linear velocity (m/s) and turn rate (rad/s, counter-clockwise).
+
+        Raises:
+            ActionError: If the action is not in the action space: a continuous action that is
+                not of shape ``(2,)``, not numeric, NaN or infinite; a discrete action that is
+                not an integer or not in ``0..5``.
+        """
         if self.discrete:
-            return self._table[int(action)]
-        a, b = (float(x) for x in np.ravel(action))
+            k = action if type(action) is int else self._index(action)
+            if 0 <= k < len(self._table):
+                return self._table[k]
+            raise ActionError(f"discrete action must be in 0..{len(self._table) - 1} ({_NAMES}), got {k}")
+        if type(action) is np.ndarray and action.shape == (2,) and action.dtype.kind == "f":
+            a, b = action.tolist()  # the common case, fast: Python floats without NumPy scalars
+        else:
+            a, b = self._pair(action)
+        if not (math.isfinite(a) and math.isfinite(b)):
+            raise ActionError(
+                f"continuous action must be 2 finite numbers (linear, turn) in [-1, 1], got {action!r}; "
+                "NaN and infinite values are refused (finite values outside [-1, 1] are clipped)"
+            )
         return max(-1.0, min(1.0, a)) * self._v_max, max(-1.0, min(1.0, b)) * self._w_max
+
+    @staticmethod
+    def _pair(action: object) -> tuple[float, float]:
+        """``(a[0], a[1])`` as floats of a continuous action of shape ``(2,)``."""
+        shape = _shape(action)
+        if shape != (2,):
+            given = repr(action) if shape is None else f"shape {shape}"
+            raise ActionError(
+                f"continuous action must have shape (2,) (linear, turn commands in [-1, 1]), got {given}"
+            )
+        try:
+            return float(action[0]), float(action[1])
+        except (TypeError, ValueError):
+            raise ActionError(
+                f"continuous action must be 2 numbers (linear, turn) in [-1, 1], got {action!r}"
+            ) from None
+
+    @staticmethod
+    def _index(action: object) -> int:
+        """A discrete action as an ``int`` (its range is checked by the caller)."""
+        if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
+            return int(action)
+        if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
+            return int(action)
+        raise ActionError(
+            f"discrete action must be an integer in 0..{len(DISCRETE_ACTIONS) - 1} ({_NAMES}), "
+            f"got {action!r} of type {type(action).__name__}"
+        )
+
+
+def _shape(action: object) -> tuple[int, ...] | str | None:
+    """The array shape of a sequence or array; ``"ragged"`` for nested lists of uneven length."""
+    if not isinstance(action, (np.ndarray, list, tuple)):
+        return None  # a scalar, a string, None: no shape to report
+    try:
+        return np.shape(action)
+    except ValueError:
+        return "ragged"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, fields, replace
 from os import PathLike
 from pathlib import Path
@@ -19,11 +19,14 @@ from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
-__all__ = ["BUILDING_TYPES", "EnvConfig"]
+__all__ = ["BUILDING_TYPES", "TASK_FIELDS", "EnvConfig", "require_task_fields"]
 
 BUILDING_TYPES = ("office", "school", "house", "random")
 """Generators an environment can name in :attr:`EnvConfig.building_type`; ``"random"`` is the
 World-Generator-like baseline."""
+
+TASK_FIELDS: dict[str, str] = {"victims": "search", "coverage_target": "explore"}
+"""Fields of :class:`EnvConfig` that one task only uses: field name -> that task."""
 
 _SUBCONFIGS = {
     "world": WorldConfig,
@@ -61,9 +64,11 @@ class EnvConfig:
             (m) of the egocentric map image.
         rewards: Weight of each reward term.
         victims: Number of victims, the rooms they may be in, and the victim sensor's range
-            (m) and field of view (rad); search environments only.
+            (m) and field of view (rad); search environments only (an exploration
+            environment refuses it).
         coverage_target: Share of the reachable floor whose observation ends an exploration
-            episode, in ``(0, 1]``.
+            episode, in ``(0, 1]``; exploration environments only (a search environment,
+            which ends when every victim is found, refuses it).
         max_steps: Control steps after which an episode is truncated (``1 / robot.control_hz``
             s each).
         action_type: ``"continuous"`` (``Box(-1, 1, (2,))``) or ``"discrete"``
@@ -156,3 +161,27 @@ def _require_known(owner: str, changes: Mapping[str, Any], known: set[str]) -> N
     unknown = sorted(set(changes) - known)
     if unknown:
         raise ConfigError(f"{owner} has no field {unknown[0]!r}; fields: {', '.join(sorted(known))}")
+
+
+def require_task_fields(config: EnvConfig, task: str, named: Iterable[str] = ()) -> None:
+    """Refuse the fields of :data:`TASK_FIELDS` that ``task`` does not use.
+
+    Such a field may be neither named as a keyword (even with its default value) nor changed
+    from its default in ``config``: it would be silently ignored.
+
+    Args:
+        config: The environment's configuration.
+        task: ``"explore"`` or ``"search"``.
+        named: The keywords the user gave (``gym.make`` or constructor overrides).
+
+    Raises:
+        ConfigError: If a field of another task is named or set, naming the field and the
+            ids that use it.
+    """
+    defaults = EnvConfig()
+    for name, owner in TASK_FIELDS.items():
+        if owner != task and (name in named or getattr(config, name) != getattr(defaults, name)):
+            raise ConfigError(
+                f"{name!r} applies to {owner} environments only ({owner.capitalize()} ids such as "
+                f"Office{owner.capitalize()}-v0), not to this {task} environment; remove it"
+            )

@@ -10,7 +10,7 @@ from gymnasium import spaces
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
-from realistic_indoor.envs.config import EnvConfig
+from realistic_indoor.envs.config import EnvConfig, require_task_fields
 from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.rewards import reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
@@ -35,7 +35,9 @@ class ExploreEnv(gym.Env):
     ## Action Space
 
     With ``action_type="continuous"`` (default) the action is a ``ndarray`` of shape ``(2,)``
-    in ``[-1, 1]``, scaled to the robot's limits (values outside are clipped):
+    in ``[-1, 1]``, scaled to the robot's limits. Finite values outside ``[-1, 1]`` are
+    clipped to it; NaN, infinities and any other shape raise
+    :class:`~realistic_indoor.errors.ActionError`:
 
     | Num | Action                  | Min | Max | Unit at 1                         |
     |-----|-------------------------|-----|-----|-----------------------------------|
@@ -43,7 +45,9 @@ class ExploreEnv(gym.Env):
     | 1   | Turn rate command (CCW) | -1  | 1   | ``robot.max_turn_rate_rad_s`` (rad/s) |
 
     With ``action_type="discrete"`` it is ``Discrete(6)``: forward, forward-left, forward-right,
-    turn left, turn right, back (see :data:`realistic_indoor.envs.actions.DISCRETE_ACTIONS`).
+    turn left, turn right, back (see :data:`realistic_indoor.envs.actions.DISCRETE_ACTIONS`):
+    an ``int``, a NumPy integer or a 0-d integer array in ``0..5``; anything else (``-1``,
+    ``6``, ``2.9``, ``True``) raises :class:`~realistic_indoor.errors.ActionError`.
     The robot reaches a command as fast as its acceleration limits allow.
 
     ## Observation Space
@@ -73,9 +77,18 @@ class ExploreEnv(gym.Env):
 
     ## Starting State
 
-    The robot stands at rest just inside the building's first entrance, facing inward; in a
-    building without an exterior door (real plans), in the middle of its largest hall (else
-    its largest room). Its map holds the first scan.
+    The robot stands at rest and its map holds the first scan. Where it stands
+    (:meth:`~realistic_indoor.sim.world.World.default_start_pose`, returned by ``reset`` as
+    ``info["start_pose"]``):
+
+    1. Just inside an entrance (a door to the outside), facing inward: on the door's centre
+       line, at the first depth from 0.3 m (in 5 cm steps, up to 3 m) that is
+       ``world.start_clearance_m`` (0.4 m) clear of walls. Entrances are tried in the plan's
+       order; the first with such a point wins.
+    2. Without one (real plans often have no exterior door), in the largest hall, else in the
+       largest room: at its centroid, or if that is not clear of walls, at the point
+       farthest from its walls; facing +x (heading 0).
+    3. Failing both, on the free cell farthest from any wall, facing +x.
 
     ## Episode End
 
@@ -91,7 +104,7 @@ class ExploreEnv(gym.Env):
     | Parameter         | Type                 | Default     | Description                                   |
     |-------------------|----------------------|-------------|-----------------------------------------------|
     | `config`          | `EnvConfig`          | preset      | the whole configuration                       |
-    | `render_mode`     | `str` or `None`      | `None`      | `"rgb_array"`: a top view of the episode      |
+    | `render_mode`     | `str` or `None`      | `None`      | `"rgb_array"`: a top view; `"human"`: it in a window |
     | `building_type`   | `str`                | preset      | `"office"`, `"school"`, `"house"`, `"random"` |
     | `area_m2`         | `float`              | generator's | floor area asked of the generator (m2)        |
     | `generator`       | callable             | `None`      | any `rng -> Building` generator               |
@@ -106,11 +119,20 @@ class ExploreEnv(gym.Env):
     | `max_steps`       | `int`                | preset      | steps before truncation                       |
     | `action_type`     | `str`                | continuous  | `"continuous"` or `"discrete"`                |
 
+    ``victims`` (search only) is refused with a :class:`~realistic_indoor.errors.ConfigError`,
+    as is any name that is not a field.
+
     ``reset(options={"building": b})`` runs that episode in building ``b``.
 
+    ``render_mode="human"`` shows the top view in a pygame window (install the ``viz`` extra:
+    ``pip install "realistic-indoor[viz]"``), drawn at every ``reset`` and ``step`` and
+    paced at ``metadata["render_fps"]`` (the control rate: real time); ``close()`` closes it.
+
     ``info`` holds ``coverage`` (share of the reachable floor observed), ``observed_area_m2``,
-    ``path_length_m`` (distance driven), ``collisions`` (steps with a wall contact) and, after
-    a step, ``rewards``.
+    ``path_length_m`` (distance driven), ``collisions`` (steps with a wall contact); after
+    ``reset``, ``start_pose``: ``(x m, y m, heading rad)`` of the robot's start in the plan's
+    frame (the building's coordinates, heading counter-clockwise from +x); after a step,
+    ``rewards``.
 
     ```python
     >>> import gymnasium as gym
@@ -127,9 +149,11 @@ class ExploreEnv(gym.Env):
     * v0: Initial version.
     """
 
-    metadata = {"render_modes": ["rgb_array"], "render_fps": 5}
+    metadata = {"render_modes": ["human", "rgb_array"], "render_fps": 5}
     reset_options: frozenset[str] = frozenset({"building"})
     """Keys ``reset(options=...)`` accepts."""
+    task = "explore"
+    """The task, for the config fields only one task uses (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
 
     def __init__(
         self, config: EnvConfig | None = None, render_mode: str | None = None, **overrides: Any
@@ -138,6 +162,7 @@ class ExploreEnv(gym.Env):
         if not isinstance(config, EnvConfig):
             raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
         self.config = config.replace(**overrides) if overrides else config
+        require_task_fields(self.config, self.task, overrides)
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ConfigError(
                 f"render_mode must be one of {self.metadata['render_modes']} or None, got {render_mode!r}"
@@ -153,12 +178,18 @@ class ExploreEnv(gym.Env):
         self._observations = self._make_observations()
         self.observation_space = spaces.Dict({k: o.space for k, o in self._observations.items()})
         self._steps = 0
+        self._window = None
 
     # -- the Gymnasium API ----------------------------------------------------------------------
     def reset(
         self, *, seed: int | None = None, options: dict[str, Any] | None = None
     ) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
-        """Start an episode in a new building (drawn from the seed) or in ``options["building"]``."""
+        """Start an episode in a new building (drawn from the seed) or in ``options["building"]``.
+
+        Returns:
+            The first observation and ``info``, which adds to a step's info ``start_pose``:
+            ``(x m, y m, heading rad)`` where the robot starts, in the plan's frame.
+        """
         super().reset(seed=seed)
         options = options or {}
         unknown = sorted(set(options) - self.reset_options)
@@ -175,12 +206,21 @@ class ExploreEnv(gym.Env):
         self._sim.reset(self.np_random)
         self._steps = 0
         self._start_episode(options)
-        return self._observe(), self._info()
+        info = self._info()
+        info["start_pose"] = self._sim.world.start_pose
+        if self.render_mode == "human":
+            self.render()
+        return self._observe(), info
 
     def step(
         self, action: np.ndarray | int
     ) -> tuple[dict[str, np.ndarray], float, bool, bool, dict[str, Any]]:
-        """Drive one control step, scan, map; return observation, reward, end flags and info."""
+        """Drive one control step, scan, map; return observation, reward, end flags and info.
+
+        Raises:
+            ActionError: If ``action`` is not in the action space (NaN or infinite, wrongly
+                shaped, or a discrete action that is not an integer in ``0..5``).
+        """
         if self._sim.world is None:
             raise gym.error.ResetNeeded("call reset() before step()")
         v, w = self._actions.command(action)
@@ -192,20 +232,51 @@ class ExploreEnv(gym.Env):
         truncated = self._steps >= self.config.max_steps
         info = self._info()
         info["rewards"] = terms
+        if self.render_mode == "human":
+            self.render()
         return self._observe(), reward, terminated, truncated, info
 
     def render(self) -> np.ndarray | None:
-        """A top view of the episode as an ``(H, W, 3)`` uint8 image (``render_mode="rgb_array"``).
+        """A top view of the episode: the plan, the robot's map, the trajectory, the scan, the robot.
 
-        Shows the plan, the robot's map, the trajectory, the latest scan and the robot.
+        Returns:
+            With ``render_mode="rgb_array"``, an ``(H, W, 3)`` uint8 image; with ``"human"``,
+            ``None``, the image being shown in a pygame window (``reset`` and ``step`` call
+            this themselves).
+
+        Raises:
+            DependencyNotInstalled: If ``render_mode="human"`` and pygame is not installed
+                (``pip install "realistic-indoor[viz]"``).
         """
         if self.render_mode is None:
             gym.logger.warn('render() needs a render mode: gym.make(..., render_mode="rgb_array")')
             return None
+        if self._sim.world is None:
+            raise gym.error.ResetNeeded("call reset() before render()")
         from realistic_indoor.envs.render import top_view
 
         victims = self.victims
-        return top_view(self._sim, *victims) if victims is not None else top_view(self._sim)
+        frame = top_view(self._sim, *victims) if victims is not None else top_view(self._sim)
+        if self.render_mode == "rgb_array":
+            return frame
+        if self._window is None:
+            from realistic_indoor.envs.window import Window
+
+            title = f"realistic-indoor: {self.spec.id if self.spec else type(self).__name__}"
+            self._window = Window(title, self.metadata["render_fps"])
+        self._window.show(frame)
+        return None
+
+    def close(self) -> None:
+        """Close the window of ``render_mode="human"``, if one is open."""
+        if self._window is not None:
+            self._window.close()
+            self._window = None
+        super().close()
+
+    def __getstate__(self) -> dict[str, Any]:
+        """The state to pickle: all but the window (a copy opens its own when it renders)."""
+        return {**self.__dict__, "_window": None}
 
     # -- state a user may inspect --------------------------------------------------------------------
     @property

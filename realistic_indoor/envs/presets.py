@@ -63,11 +63,15 @@ def preset_config(env_id: str, **overrides: Any):
         **overrides: Config fields to change.
 
     Raises:
-        ConfigError: If the id is unknown or an override is invalid.
+        ConfigError: If the id is unknown, an override is invalid, or it is a field the id's
+            task does not use (``victims`` on an Explore id, ``coverage_target`` on a Search id).
     """
-    from realistic_indoor.envs.config import EnvConfig
+    from realistic_indoor.envs.config import EnvConfig, require_task_fields
     from realistic_indoor.errors import ConfigError
 
     if env_id not in PRESETS:
         raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
-    return EnvConfig().replace(**{**PRESETS[env_id].kwargs, **overrides})
+    config = EnvConfig().replace(**{**PRESETS[env_id].kwargs, **overrides})
+    task = next(t for t in _ENTRY_POINTS if env_id.endswith(f"{t}-v0"))
+    require_task_fields(config, task.lower(), overrides)
+    return config

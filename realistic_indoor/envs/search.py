@@ -82,8 +82,9 @@ class SearchEnv(ExploreEnv):
 
     ## Starting State
 
-    As in exploration: at rest inside the entrance (or in the largest hall of a plan without
-    one). Victims in view from the start count as found, without reward.
+    As in exploration (``info["start_pose"]`` after ``reset``): at rest inside the entrance (or
+    in the largest hall of a plan without one). Victims in view from the start count as found,
+    without reward.
 
     ## Episode End
 
@@ -95,7 +96,8 @@ class SearchEnv(ExploreEnv):
     Those of :class:`~realistic_indoor.envs.explore.ExploreEnv` (every
     :class:`~realistic_indoor.envs.config.EnvConfig` field), of which ``victims``
     (:class:`~realistic_indoor.sim.victims.VictimConfig`: number, allowed rooms, clearance,
-    sensor range and field of view) is used by search only; ``coverage_target`` is not used.
+    sensor range and field of view) is used by search only; ``coverage_target`` (exploration
+    only) is refused with a :class:`~realistic_indoor.errors.ConfigError`.
     ``info`` adds ``victims_found`` and ``victims_total``. ``reset(options={"victims": xy})``
     puts the episode's victims at the ``(n_victims, 2)`` positions ``xy`` (m) instead of
     drawing them (with ``"building"``, a fixed scenario).
@@ -116,6 +118,7 @@ class SearchEnv(ExploreEnv):
     """
 
     reset_options = frozenset({"building", "victims"})
+    task = "search"
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)

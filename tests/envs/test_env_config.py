@@ -61,7 +61,7 @@ def test_unknown_reset_option__raises_config_error():
 
 def test_bad_render_mode__raises_config_error():
     with pytest.raises(RealisticIndoorError, match="render_mode"):
-        ExploreEnv(generator=ToyOffice(), render_mode="human")
+        ExploreEnv(generator=ToyOffice(), render_mode="ansi")
 
 
 def test_step_before_reset__raises_reset_needed():

@@ -207,3 +207,94 @@ def test_run_script__a_bug_keeps_its_traceback():
 
     with pytest.raises(KeyError):
         run_script(buggy, "x.py")
+
+
+# --- convert and render over folders: bad plans are left out, named and counted ---
+
+
+@pytest.fixture
+def plans_with_broken(tiny_office, tmp_path) -> Path:
+    """``plans/``: ``a.json``, an empty ``broken.xml`` and ``sub/b.json`` (sorted in that order)."""
+    folder = tmp_path / "plans"
+    save(tiny_office, folder / "a.json")
+    (folder / "broken.xml").write_text("")
+    save(tiny_office, folder / "sub" / "b.json")
+    return folder
+
+
+def test_convert__folder_to_ros_maps_skips_the_broken_plan(plans_with_broken, tmp_path, capsys):
+    out = tmp_path / "maps"
+    assert main(["convert", str(plans_with_broken), "--out-dir", str(out), "--format", "yaml"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [
+        f"wrote {out / 'a.pgm'}",
+        f"wrote {out / 'a.yaml'}",
+        f"wrote {out / 'sub' / 'b.pgm'}",
+        f"wrote {out / 'sub' / 'b.yaml'}",
+    ]
+    assert captured.err.splitlines() == [
+        f"realistic-indoor: warning: skipped {plans_with_broken / 'broken.xml'}: malformed XML at line 1, "
+        "column 1: no element found",
+        f"converted 2 of 3 plans into {out}; skipped 1 of 3 plans: broken.xml",
+    ]
+
+
+def test_convert__folder_strict_stops_at_the_broken_plan(plans_with_broken, tmp_path, capsys):
+    argv = [
+        "convert",
+        str(plans_with_broken),
+        "--out-dir",
+        str(tmp_path / "o"),
+        "--format",
+        "json",
+        "--strict",
+    ]
+    assert main(argv) == 1
+    _one_line_error(capsys.readouterr().err, str(plans_with_broken / "broken.xml"), "malformed XML")
+    assert load(tmp_path / "o" / "a.json").rooms  # written before the broken plan was reached
+    assert not (tmp_path / "o" / "sub").exists()
+
+
+def test_render__folder_draws_every_good_plan(plans_with_broken, tmp_path, capsys):
+    out = tmp_path / "pictures"
+    assert main(["render", str(plans_with_broken), "--out-dir", str(out), "--size", "2", "--dpi", "50"]) == 0
+    assert (out / "a.png").read_bytes()[:8] == PNG_MAGIC
+    assert (out / "sub" / "b.png").read_bytes()[:8] == PNG_MAGIC
+    assert (
+        capsys.readouterr().err.splitlines()[-1]
+        == f"drawn 2 of 3 plans into {out}; skipped 1 of 3 plans: broken.xml"
+    )
+
+
+def test_convert__folder_mistakes_are_one_line(plans_with_broken, tiny_office, tmp_path, capsys):
+    save(tiny_office, plans_with_broken / "a.xml")
+    cases = [
+        (
+            ["convert", str(plans_with_broken), "-o", str(tmp_path / "x.json")],
+            "is a folder; convert its plans with --out-dir",
+        ),
+        (
+            ["render", str(plans_with_broken), "-o", str(tmp_path / "x.png")],
+            "is a folder; draw its plans with --out-dir",
+        ),
+        (["convert", str(plans_with_broken), "--out-dir", str(tmp_path / "o")], "--out-dir needs --format"),
+        (
+            ["convert", str(plans_with_broken), "--out-dir", str(tmp_path / "o"), "--format", "json"],
+            f"{plans_with_broken / 'a.json'} and {plans_with_broken / 'a.xml'} would both be written to",
+        ),
+        (
+            [
+                "convert",
+                str(plans_with_broken / "sub"),
+                "--out-dir",
+                str(plans_with_broken / "sub"),
+                "--format",
+                "json",
+            ],
+            "would be written over itself",
+        ),
+    ]
+    for argv, message in cases:
+        assert main(argv) == 1, argv
+        _one_line_error(capsys.readouterr().err, message)
+    assert not (tmp_path / "o").exists()

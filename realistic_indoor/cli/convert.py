@@ -1,10 +1,36 @@
-"""``realistic-indoor convert PLAN -o OUT``: change a plan's format."""
+"""``realistic-indoor convert PLAN -o OUT`` or ``convert PLANS --out-dir DIR --format EXT``: change formats."""
 
 from __future__ import annotations
 
 import argparse
+import textwrap
+from pathlib import Path
+from typing import TYPE_CHECKING
 
+from realistic_indoor.cli._batch import add_output_options, run_batch
 from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+
+if TYPE_CHECKING:
+    from realistic_indoor.building import Building
+
+EPILOG = """\
+examples:
+  realistic-indoor convert office.json -o office.yaml --resolution 0.05
+  realistic-indoor convert ../shared/data/real_floorplans/office --out-dir maps/ --format yaml --infer-entrances
+
+With --out-dir, PLAN is a file, a folder (every readable plan below it, recursively) or a quoted
+glob ('plans/*.xml'); each plan is written to DIR under its own name (and sub-folder) with the
+new ending. A plan that cannot be read or written is left out with a warning naming it, and the
+count is printed at the end ("skipped 1 of 15 plans: broken.xml"); --strict stops at the first.
+--infer-entrances applies to the floor-plan XML plans of a batch and is ignored for the others.
+"""
+
+
+def _endings() -> list[str]:
+    """The first ending of each writable format, without the dot (``json``, ``wg.xml``, ``yaml``)."""
+    from realistic_indoor.io.registry import FORMATS
+
+    return [ends[0].lstrip(".") for ends, _m, _r, w in FORMATS.values() if w]
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -14,11 +40,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     ends = ", ".join(f"{e} ({name})" for name, (es, _m, _r, w) in FORMATS.items() if w for e in es)
     p = sub.add_parser(
         "convert",
-        help="convert a plan to another format (chosen from the output's extension)",
-        description=f"Convert a plan. Output formats by extension: {ends}.",
+        help="convert a plan, or a folder of plans, to another format (chosen by the ending)",
+        description=textwrap.fill(
+            f"Convert a plan, or every plan of a folder. Output formats by ending: {ends}."
+        ),
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    p.add_argument("plan", help="input plan file")
-    p.add_argument("-o", "--output", required=True, help="output file; its extension picks the format")
+    p.add_argument("plan", help="input plan file; with --out-dir also a folder or a quoted glob")
+    add_output_options(p, _endings(), None, "file")
     p.add_argument(
         "--resolution", type=float, default=0.05, help="ROS map resolution, metres per pixel (default 0.05)"
     )
@@ -28,10 +58,25 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read, write, and report the files written."""
-    from realistic_indoor.io import format_of, save
+    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.io import format_of
 
+    if args.out_dir:
+        return run_batch(args, lambda b, path: _save(b, path, args.resolution), "converted")
+    if Path(args.plan).is_dir():
+        raise ConfigError(f"{args.plan} is a folder; convert its plans with --out-dir DIR --format EXT")
+    if args.format is not None:
+        raise ConfigError("--format goes with --out-dir; with -o the output's ending picks the format")
+    format_of(args.output)
     b = load_plan(args)
-    options = {"resolution_m": args.resolution} if format_of(args.output) == "ros" else {}
-    for path in save(b, args.output, **options):
+    for path in _save(b, Path(args.output), args.resolution):
         print(f"wrote {path}")
     return 0
+
+
+def _save(building: Building, path: Path, resolution_m: float) -> list[Path]:
+    """Write ``building`` to ``path``; a ROS map gets ``resolution_m`` (metres per pixel)."""
+    from realistic_indoor.io import format_of, save
+
+    options = {"resolution_m": resolution_m} if format_of(path) == "ros" else {}
+    return save(building, path, **options)

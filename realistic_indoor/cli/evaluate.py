@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
+from pathlib import Path
 
 from realistic_indoor.errors import ConfigError
 
@@ -24,11 +26,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         "evaluate",
         help="run agents in environments over many seeds; metrics, CSV/JSON, figures",
         description="Run every agent in every environment for --episodes seeds (the same seeds, hence "
-        "the same buildings, for every agent), in parallel processes or on a Ray cluster. Writes "
-        "episodes.csv, summary.csv (means with 95% confidence intervals), results.json and coverage "
-        "figures to --out, and prints the summary.",
+        "the same buildings, for every agent), in parallel processes or on a Ray cluster. Appends each "
+        "episode to episodes.jsonl in --out as it finishes (an interrupted run keeps them; --resume "
+        "continues it), then writes episodes.csv, summary.csv (means with 95% confidence intervals), "
+        "results.json and coverage figures, and prints the summary.",
         epilog="Environments are registered ids, or ID:PLAN to run a plan file (or every plan in a "
         "folder) as the fixed building, e.g. OfficeExplore-v0:../shared/data/real_floorplans/office. "
+        "A plan that cannot be read is left out with a warning naming it, counted at the end and "
+        "listed in results.json (meta.skipped); --strict stops at the first instead. "
         "Agents: random, wall, frontier, utility, structure, ppo:MODEL.zip.",
     )
     p.add_argument("--agents", required=True, help="comma-separated agent names, e.g. frontier,random")
@@ -46,7 +51,28 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="ADDRESS",
         help="run on a Ray cluster (pip install ray); optional address, default local",
     )
-    p.add_argument("--out", default="evaluation", help="output folder (default ./evaluation)")
+    p.add_argument(
+        "--out",
+        default="runs/evaluation",
+        help="output folder (default runs/evaluation); one that holds an earlier run's results is "
+        "refused unless --resume or --overwrite is given",
+    )
+    again = p.add_mutually_exclusive_group()
+    again.add_argument(
+        "--resume",
+        action="store_true",
+        help="continue the run in --out: episodes it finished (same agent, environment, seed and "
+        "settings) are kept, the others run, and the outputs are written over all of them",
+    )
+    again.add_argument(
+        "--overwrite", action="store_true", help="replace the results of an earlier run in --out"
+    )
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="stop at the first plan that cannot be read or has no rooms, or that the floor-plan reader "
+        "would have to repair (default: leave it out with a warning)",
+    )
     p.add_argument("--max-steps", type=int, default=None, help="override every environment's step limit")
     p.add_argument(
         "--env-kwargs",
@@ -55,38 +81,74 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="more gym.make arguments as JSON, e.g. '{\"area_m2\": 800}'",
     )
     p.add_argument("--no-figures", action="store_true", help="skip the coverage figures")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--quiet", action="store_true", help="no progress bar (it shows only on a terminal)")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the evaluation, write the outputs, print the summary."""
-    from realistic_indoor.evaluation import evaluate, format_table, summarize
+    from realistic_indoor.evaluation import format_table, run_evaluation, summarize
+    from realistic_indoor.validator.plan_sets import show_progress, skipped_summary
 
     agents = [a.strip() for a in args.agents.split(",") if a.strip()]
     envs = [e.strip() for e in args.envs.split(",") if e.strip()]
     kwargs = _env_kwargs(args.env_kwargs)
     if args.max_steps is not None:
         kwargs["max_steps"] = args.max_steps
-    results = evaluate(
-        agents,
-        envs,
-        episodes=args.episodes,
-        seed=args.seed,
-        workers=args.workers,
-        out_dir=args.out,
-        figures=not args.no_figures,
-        use_ray=args.ray is not None,
-        ray_address=args.ray or None,
-        progress=not args.quiet,
-        env_kwargs=kwargs,
-    )
+    _check_out(args)
+    try:
+        evaluation = run_evaluation(
+            agents,
+            envs,
+            episodes=args.episodes,
+            seed=args.seed,
+            workers=args.workers,
+            out_dir=args.out,
+            figures=not args.no_figures,
+            use_ray=args.ray is not None,
+            ray_address=args.ray or None,
+            progress=show_progress(args.quiet),
+            env_kwargs=kwargs,
+            strict=args.strict,
+            resume=args.resume,
+        )
+    except KeyboardInterrupt:
+        log = Path(args.out) / "episodes.jsonl"
+        if log.is_file():
+            print(
+                f"finished episodes are kept in {log}; add --resume to the same command to continue",
+                file=sys.stderr,
+            )
+        raise
+    results = evaluation.results
     searching = any(r.victims_total for r in results)
     print(format_table(summarize(results), _TABLE_METRICS + (_SEARCH_METRICS if searching else ())))
-    print(
-        f"results in {args.out}/ (episodes.csv, summary.csv, results.json{'' if args.no_figures else ', figures'})"
-    )
+    figures = "" if args.no_figures else ", figures"
+    print(f"results in {args.out}/ (episodes.jsonl, episodes.csv, summary.csv, results.json{figures})")
+    if evaluation.resumed:
+        print(
+            f"resumed: {evaluation.resumed} of {len(results)} episodes taken from the earlier run",
+            file=sys.stderr,
+        )
+    if line := skipped_summary(evaluation.skipped, evaluation.plans):
+        print(f"{line} (listed in results.json under meta.skipped)", file=sys.stderr)
     return 0
+
+
+def _check_out(args: argparse.Namespace) -> None:
+    """Refuse an ``--out`` that is a file, or holds an earlier run's results, before any episode runs."""
+    from realistic_indoor.evaluation import previous_results
+    from realistic_indoor.files import check_output_dir
+
+    check_output_dir(args.out, "--out")
+    found = previous_results(args.out)
+    if found and not (args.resume or args.overwrite):
+        raise ConfigError(
+            f"--out {args.out} holds the results of an earlier run ({', '.join(found)}); add --resume to "
+            "continue it, --overwrite to replace it, or choose a new --out folder"
+        )
+    if args.resume and not found:
+        print(f"--resume: no earlier run in {args.out}; starting a new one", file=sys.stderr)
 
 
 def _env_kwargs(text: str | None) -> dict:

@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from realistic_indoor.validator.compare import Comparison
 
 EPILOG = """\
 Each SET is one set of plans: a file, a folder (every readable plan inside, recursively) or a
@@ -13,6 +17,10 @@ per file. Examples:
   realistic-indoor validate ../shared/data/real_floorplans/office --type office
   realistic-indoor validate gen/ random/ real/ --type office --labels generated,random,real --plot cmp.png
   realistic-indoor validate gen/ --reference real/ --format markdown -o report.md
+
+A plan that cannot be read (a malformed or empty file) or measured (no rooms or no doors) is
+left out with a warning naming it, listed in the report under "Plans left out", and counted at
+the end ("skipped 1 of 16 plans"); --strict stops at the first such plan instead (exit 1).
 
 The realism score is 0 for a set identical to the reference; below 0.5 hard to tell apart,
 above 2 structurally different. The two-sample accuracy is 0.5 when a classifier cannot tell
@@ -59,8 +67,18 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="infer semantic labels from function, shape and area: for plans that lack them (auto), "
         "for all plans, or never",
     )
-    p.add_argument(
-        "--skip-bad", action="store_true", help="leave out plans without rooms or doors instead of failing"
+    bad = p.add_mutually_exclusive_group()
+    bad.add_argument(
+        "--strict",
+        action="store_true",
+        help="stop at the first plan that cannot be read or measured, or that the floor-plan reader "
+        "would have to repair (default: leave such plans out with a warning and list them in the report)",
+    )
+    bad.add_argument(
+        "--skip-bad",
+        action="store_true",
+        help="leave out plans that cannot be read or have no rooms or doors: the default now, kept for "
+        "old scripts",
     )
     p.add_argument("--no-two-sample", action="store_true", help="skip the classifier two-sample tests")
     p.add_argument(
@@ -72,6 +90,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--seed", type=int, default=0, help="seed of the two-sample tests' cross-validation (default 0)"
     )
     p.add_argument("--worst", type=int, default=3, help="worst deviations named per set (default 3)")
+    p.add_argument("--quiet", action="store_true", help="no progress bars (they show only on a terminal)")
     p.set_defaults(func=run)
 
 
@@ -95,7 +114,7 @@ def _reference(args: argparse.Namespace):
 
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.models.reference import REFERENCE_SETS
-    from realistic_indoor.validator.plan_sets import load_plan_set
+    from realistic_indoor.validator.plan_sets import load_plan_set, show_progress
 
     ref = args.reference
     if ref == "paper" or (ref in REFERENCE_SETS and not Path(ref).exists()):
@@ -105,30 +124,49 @@ def _reference(args: argparse.Namespace):
             f"--reference {ref!r} is neither a folder, file or pattern of plans nor a paper table "
             f"(paper, {', '.join(REFERENCE_SETS)})"
         )
-    return load_plan_set(ref)
+    return load_plan_set(ref, strict=args.strict, progress=show_progress(args.quiet))
 
 
-def _check_outputs(args: argparse.Namespace) -> None:
-    """Refuse unwritable ``-o`` and ``--plot`` paths before the sets are read."""
+def _check_arguments(args: argparse.Namespace) -> None:
+    """Refuse a bad ``--type`` and unwritable ``-o`` and ``--plot`` paths before the sets are read."""
     from realistic_indoor.files import check_output_path
+    from realistic_indoor.validator.compare import judged_type
     from realistic_indoor.validator.plot import PLOT_SUFFIXES
 
+    if args.type is not None:
+        judged_type(args.type)
     if args.output:
         check_output_path(args.output, "-o")
     if args.plot:
         check_output_path(args.plot, "--plot", PLOT_SUFFIXES)
 
 
+def _skipped_line(comparison: Comparison) -> str | None:
+    """``"skipped 1 of 3 plans: broken.xml"`` over every set and a reference fitted from plans."""
+    from realistic_indoor.validator.plan_sets import SkippedPlan, skipped_summary
+
+    pairs = [*(p for s in comparison.sets for p in s.skipped), *comparison.reference_skipped]
+    total = sum(len(s.plans) + len(s.skipped) for s in comparison.sets) + len(comparison.reference_skipped)
+    if comparison.reference_set is not None:
+        total += len(comparison.reference_set)
+    return skipped_summary([SkippedPlan(src, why) for src, why in pairs], total)
+
+
 def run(args: argparse.Namespace) -> int:
     """Load the sets, compare them, print the report, draw the figure."""
     from realistic_indoor.files import write_text
     from realistic_indoor.validator.compare import compare_sets
-    from realistic_indoor.validator.plan_sets import load_plan_set
+    from realistic_indoor.validator.plan_sets import load_plan_set, show_progress
     from realistic_indoor.validator.report import render_comparison
 
     names = _names(args)
-    _check_outputs(args)
-    sets = [load_plan_set(spec, name) for spec, name in zip(args.sets, names, strict=True)]
+    _check_arguments(args)
+    progress = show_progress(args.quiet)
+    reference = _reference(args)
+    sets = [
+        load_plan_set(spec, name, strict=args.strict, progress=progress)
+        for spec, name in zip(args.sets, names, strict=True)
+    ]
     if len(sets) > 6 and all(len(s) == 1 for s in sets) and args.labels is None:
         print(
             f"note: {len(sets)} sets of one plan each; quote a glob pattern to make it one set",
@@ -137,12 +175,13 @@ def run(args: argparse.Namespace) -> int:
     comparison = compare_sets(
         sets,
         args.type,
-        _reference(args),
+        reference,
         infer=args.infer_labels,
-        skip_bad=args.skip_bad,
+        skip_bad=not args.strict,
         seed=args.seed,
         two_sample=not args.no_two_sample,
         two_sample_area=args.two_sample_area,
+        progress=progress,
     )
     text = render_comparison(comparison, args.format, worst=args.worst)
     if args.output:
@@ -154,4 +193,6 @@ def run(args: argparse.Namespace) -> int:
         from realistic_indoor.validator.plot import plot_comparison
 
         print(f"wrote {plot_comparison(comparison, args.plot)}", file=sys.stderr)
+    if line := _skipped_line(comparison):
+        print(f"{line} (listed in the report under 'Plans left out' or 'Notes')", file=sys.stderr)
     return 0

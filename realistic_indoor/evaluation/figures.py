@@ -10,6 +10,7 @@ import numpy as np
 
 from realistic_indoor.evaluation.aggregate import group_results, mean_curve
 from realistic_indoor.evaluation.episode import EpisodeResult
+from realistic_indoor.files import atomic_path
 
 __all__ = ["plot_coverage"]
 
@@ -31,7 +32,7 @@ def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "
         x: ``"time"`` or ``"distance"``.
 
     Returns:
-        The path written.
+        The path written (whole or not at all: drawn to a temporary file renamed into place).
     """
     import matplotlib
 
@@ -65,9 +66,11 @@ def plot_coverage(results: Sequence[EpisodeResult], path: str | Path, x: str = "
         ax.set_visible(False)
     fig.tight_layout()
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    try:
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, dpi=120)
+    finally:
+        plt.close(fig)
     return path
 
 

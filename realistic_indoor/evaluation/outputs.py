@@ -1,23 +1,55 @@
-"""Writing and reading evaluation results: per-episode CSV, summary CSV, everything as JSON."""
+"""Writing and reading evaluation results: per-episode CSV, summary CSV, everything as JSON.
+
+While an evaluation runs, each finished episode is appended to ``episodes.jsonl`` (the episode
+log, :class:`EpisodeLog`), so an interrupted run keeps every finished episode and can be resumed
+(:func:`finished_episodes`). The other files are written whole at the end, each to a temporary
+file renamed into place (:mod:`realistic_indoor.files`).
+"""
 
 from __future__ import annotations
 
 import csv
 import json
 import math
+import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import IO, Any
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.evaluation.aggregate import summarize
 from realistic_indoor.evaluation.episode import SCALARS, EpisodeResult
+from realistic_indoor.evaluation.tasks import EpisodeTask, task_key
+from realistic_indoor.files import atomic_write, write_text
 
-__all__ = ["EPISODE_COLUMNS", "format_table", "read_results", "write_results"]
+__all__ = [
+    "EPISODE_COLUMNS",
+    "LOG_NAME",
+    "RESULT_FILES",
+    "EpisodeLog",
+    "finished_episodes",
+    "format_table",
+    "previous_results",
+    "read_results",
+    "write_results",
+]
 
 EPISODE_COLUMNS = ("agent", "env", "group", "seed", *SCALARS)
 """Columns of ``episodes.csv``."""
+LOG_NAME = "episodes.jsonl"
+"""The episode log in an output folder: one JSON line per finished episode."""
+RESULT_FILES = (
+    LOG_NAME,
+    "episodes.csv",
+    "summary.csv",
+    "results.json",
+    "coverage_time.png",
+    "coverage_distance.png",
+)
+"""The files an evaluation writes in its output folder."""
 _FORMAT = 1
+_SETTINGS = ("env_id", "kwargs", "curve_every_steps", "curve_every_m", "target")
+"""What a resumed episode must share with the run it continues."""
 
 
 def write_results(
@@ -34,7 +66,6 @@ def write_results(
         The files written, by name.
     """
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     summary = summarize(results)
     files = {"episodes": out / "episodes.csv", "summary": out / "summary.csv", "json": out / "results.json"}
     _write_csv(files["episodes"], [{c: getattr(r, c) for c in EPISODE_COLUMNS} for r in results])
@@ -45,8 +76,143 @@ def write_results(
         "summary": summary,
         "episodes": [r.to_dict() for r in results],
     }
-    files["json"].write_text(json.dumps(_plain(payload), indent=1) + "\n", encoding="utf-8")
+    write_text(files["json"], json.dumps(_plain(payload), indent=1) + "\n")
     return files
+
+
+def previous_results(out_dir: str | Path) -> list[str]:
+    """The names of the evaluation files (:data:`RESULT_FILES`) already in ``out_dir``."""
+    return [name for name in RESULT_FILES if (Path(out_dir) / name).is_file()]
+
+
+class EpisodeLog:
+    """The episode log of an output folder, appended to as episodes finish.
+
+    Each line is one JSON object ``{"task": ..., "result": ...}``: the task's agent, environment
+    label and seed with the settings that shape its result, and :meth:`EpisodeResult.to_dict`.
+    Each line is flushed to disk when written, so an interrupt or a crash loses at most the
+    line being written, which :func:`finished_episodes` ignores. (An append-only log is not
+    rewritten whole, unlike the other outputs.)
+
+    Args:
+        out_dir: The output folder (created if missing).
+        append: Continue an existing log (``--resume``) instead of starting a new one.
+    """
+
+    def __init__(self, out_dir: str | Path, append: bool = False) -> None:
+        self.path = Path(out_dir) / LOG_NAME
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        if append and _ends_torn(self.path):
+            with self.path.open("a", encoding="utf-8") as f:
+                f.write("\n")  # end a line torn by an interrupt, so the next record starts clean
+        self._file: IO[str] | None = self.path.open("a" if append else "w", encoding="utf-8")
+
+    def write(self, task: EpisodeTask, result: EpisodeResult) -> None:
+        """Append one finished episode and flush it to disk."""
+        if self._file is None:
+            raise ValueError(f"{self.path}: the episode log is closed")
+        record = {"task": _task_record(task), "result": _plain(result.to_dict())}
+        self._file.write(json.dumps(record, separators=(",", ":")) + "\n")
+        self._file.flush()
+        os.fsync(self._file.fileno())
+
+    def close(self) -> None:
+        """Close the file."""
+        if self._file is not None:
+            self._file.close()
+            self._file = None
+
+    def __enter__(self) -> EpisodeLog:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def finished_episodes(out_dir: str | Path, tasks: Sequence[EpisodeTask]) -> dict[int, EpisodeResult]:
+    """The episodes of ``tasks`` that an earlier run into ``out_dir`` finished (its episode log).
+
+    Episodes are matched by agent, environment label and seed; a line torn by an interrupt is
+    ignored; episodes of the log that are not among ``tasks`` are left out.
+
+    Args:
+        out_dir: The output folder of the earlier run.
+        tasks: The episodes to run now.
+
+    Returns:
+        ``{index in tasks: result}`` of the episodes already finished.
+
+    Raises:
+        ConfigError: If an episode was finished with other settings (``max_steps``, another
+            environment id, ...) than the task asks for now: the results would not be comparable.
+    """
+    path = Path(out_dir) / LOG_NAME
+    if not path.is_file():
+        return {}
+    by_key = {task_key(t): i for i, t in enumerate(tasks)}
+    done: dict[int, EpisodeResult] = {}
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        record = _parse_line(line)
+        if record is None:
+            continue
+        old, result = record
+        i = by_key.get((old["agent"], old["env"], old["seed"]))
+        if i is None:
+            continue
+        _check_same_settings(old, _task_record(tasks[i]), path, number)
+        done[i] = result
+    return done
+
+
+def _task_record(task: EpisodeTask) -> dict[str, Any]:
+    """What identifies an episode and shapes its result, as JSON-ready values."""
+    record = {
+        "agent": task.agent,
+        "env": task.env.label,
+        "seed": task.seed,
+        "env_id": task.env.env_id,
+        "plan": task.env.plan,
+        "kwargs": task.env.kwargs,
+        "curve_every_steps": task.curve_every_steps,
+        "curve_every_m": task.curve_every_m,
+        "target": task.target,
+    }
+    return json.loads(json.dumps(record, default=repr))
+
+
+def _parse_line(line: str) -> tuple[dict[str, Any], EpisodeResult] | None:
+    """A log line's task and result, or ``None`` for a blank or torn line."""
+    try:
+        data = json.loads(line)
+        return data["task"], EpisodeResult.from_dict(_unplain(data["result"]))
+    except (ValueError, KeyError, TypeError):
+        return None
+
+
+def _check_same_settings(old: dict[str, Any], new: dict[str, Any], path: Path, line: int) -> None:
+    changed = [k for k in _SETTINGS if old.get(k) != new[k]]
+    if _plan_name(old.get("plan")) != _plan_name(new["plan"]):
+        changed.append("plan")
+    if changed:
+        was = ", ".join(f"{k} {old.get(k)!r} (now {new[k]!r})" for k in changed)
+        raise ConfigError(
+            f"{path}, line {line}: {old['agent']} on {old['env']}, seed {old['seed']} ran with other "
+            f"settings: {was}; resume with the same options, or use a new --out folder"
+        )
+
+
+def _plan_name(plan: str | None) -> str | None:
+    """A plan's file name: the same plan resumed from another folder keeps it."""
+    return None if plan is None else Path(plan).name
+
+
+def _ends_torn(path: Path) -> bool:
+    """Whether ``path`` exists and does not end with a line break."""
+    if not path.is_file() or path.stat().st_size == 0:
+        return False
+    with path.open("rb") as f:
+        f.seek(-1, os.SEEK_END)
+        return f.read(1) != b"\n"
 
 
 def read_results(path: str | Path) -> tuple[list[EpisodeResult], dict[str, Any]]:
@@ -84,7 +250,7 @@ def _interval(mean: float, low: float, high: float) -> str:
 
 
 def _write_csv(path: Path, rows: list[dict[str, Any]]) -> None:
-    with path.open("w", newline="", encoding="utf-8") as f:
+    with atomic_write(path, "w", newline="") as f:
         if not rows:
             return
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))

@@ -3,14 +3,19 @@
 from __future__ import annotations
 
 import os
+import signal
+import warnings
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import Future, ProcessPoolExecutor, as_completed
 
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
 from realistic_indoor.evaluation.episode import EpisodeResult, run_episode
 from realistic_indoor.evaluation.tasks import EpisodeTask, make_env
 
 __all__ = ["check_tasks", "run_tasks"]
+
+OnResult = Callable[[int, EpisodeResult], object]
+"""Called in this process as each episode finishes: ``on_result(index in tasks, result)``."""
 
 
 def run_tasks(
@@ -19,11 +24,14 @@ def run_tasks(
     ray_address: str | None = None,
     use_ray: bool = False,
     progress: bool = True,
+    on_result: OnResult | None = None,
+    check: bool = True,
 ) -> list[EpisodeResult]:
     """Run episodes and return their results in the order of ``tasks``.
 
     Every episode is independent and seeded, so the results do not depend on the number of
-    workers or on the order in which they finish.
+    workers or on the order in which they finish. Warnings are shown once, when the
+    environments are checked in this process: worker processes do not repeat them.
 
     Args:
         tasks: The episodes.
@@ -32,14 +40,24 @@ def run_tasks(
             a local one. Used with ``use_ray``.
         use_ray: Run the episodes as Ray tasks (needs ``pip install ray``).
         progress: Show a progress bar (tqdm, on stderr).
+        on_result: Called with each episode's index and result as soon as it finishes (to
+            save it), in the order they finish.
+        check: Check the agents and environments first (:func:`check_tasks`); ``False`` when
+            the caller has.
 
     Raises:
         ConfigError: If an agent or environment is invalid (checked before any episode runs),
             or Ray is asked for but not installed.
+        KeyboardInterrupt: When interrupted; worker processes are stopped first, and every
+            episode finished before has been passed to ``on_result``.
     """
-    check_tasks(tasks)
+    if check:
+        check_tasks(tasks)
+    if not tasks:
+        return []
+    done = on_result or (lambda _i, _r: None)
     if use_ray:
-        return _run_ray(tasks, ray_address, progress)
+        return _run_ray(tasks, ray_address, progress, done)
     workers = (os.cpu_count() or 1) if workers is None else workers
     if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
         raise ConfigError(f"workers must be an integer >= 1, got {workers!r}")
@@ -47,11 +65,12 @@ def run_tasks(
     try:
         if workers == 1 or len(tasks) == 1:
             results = []
-            for task in tasks:
+            for i, task in enumerate(tasks):
                 results.append(_run(task))
+                done(i, results[-1])
                 bar.update(1)
             return results
-        return _run_pool(tasks, workers, bar.update)
+        return _run_pool(tasks, workers, done, bar.update)
     finally:
         bar.close()
 
@@ -82,19 +101,52 @@ def _run(task: EpisodeTask) -> EpisodeResult:
         raise ConfigError(f"{task.agent} on {task.env.label}, seed {task.seed}: {e}") from None
 
 
+def _run_quietly(task: EpisodeTask) -> EpisodeResult:
+    """:func:`_run` without warnings: in a worker, where this process has shown them already."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return _run(task)
+
+
+def _worker_init() -> None:
+    """Leave Ctrl-C to the main process, which stops the workers itself."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def _run_pool(
-    tasks: Sequence[EpisodeTask], workers: int, tick: Callable[[int], object]
+    tasks: Sequence[EpisodeTask], workers: int, done: OnResult, tick: Callable[[int], object]
 ) -> list[EpisodeResult]:
     results: list[EpisodeResult | None] = [None] * len(tasks)
-    with ProcessPoolExecutor(max_workers=min(workers, len(tasks))) as pool:
-        futures = {pool.submit(_run, task): i for i, task in enumerate(tasks)}
+    pool = ProcessPoolExecutor(max_workers=min(workers, len(tasks)), initializer=_worker_init)
+    try:
+        futures: dict[Future[EpisodeResult], int] = {
+            pool.submit(_run_quietly, task): i for i, task in enumerate(tasks)
+        }
         for future in as_completed(futures):
             results[futures[future]] = future.result()
+            done(futures[future], future.result())
             tick(1)
+    except BaseException:
+        _stop(pool)
+        raise
+    pool.shutdown()
     return results  # type: ignore[return-value]
 
 
-def _run_ray(tasks: Sequence[EpisodeTask], address: str | None, progress: bool) -> list[EpisodeResult]:
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """Cancel the episodes not started and end the running ones (an error or Ctrl-C)."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+    for process in processes:
+        process.join(timeout=5)
+
+
+def _run_ray(
+    tasks: Sequence[EpisodeTask], address: str | None, progress: bool, done: OnResult
+) -> list[EpisodeResult]:
     try:
         import ray
     except ImportError:
@@ -102,7 +154,7 @@ def _run_ray(tasks: Sequence[EpisodeTask], address: str | None, progress: bool) 
             "--ray needs the ray package: pip install ray (or leave out --ray to use local processes)"
         ) from None
     ray.init(address=address, ignore_reinit_error=True)
-    remote = ray.remote(_run)
+    remote = ray.remote(_run_quietly)
     refs = [remote.remote(task) for task in tasks]
     index = {ref: i for i, ref in enumerate(refs)}
     results: list[EpisodeResult | None] = [None] * len(tasks)
@@ -110,10 +162,15 @@ def _run_ray(tasks: Sequence[EpisodeTask], address: str | None, progress: bool) 
     pending = list(refs)
     try:
         while pending:
-            done, pending = ray.wait(pending, num_returns=1)
-            for ref in done:
+            finished, pending = ray.wait(pending, num_returns=1)
+            for ref in finished:
                 results[index[ref]] = ray.get(ref)
-            bar.update(len(done))
+                done(index[ref], results[index[ref]])
+            bar.update(len(finished))
+    except BaseException:
+        for ref in pending:
+            ray.cancel(ref)
+        raise
     finally:
         bar.close()
     return results  # type: ignore[return-value]

@@ -5,14 +5,27 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from realistic_indoor.errors import ConfigError
+from realistic_indoor.errors import ConfigError, PlanFormatError
 
-__all__ = ["PLAN_SUFFIXES", "EnvSpec", "EpisodeTask", "make_env", "make_tasks", "parse_envs"]
+if TYPE_CHECKING:
+    from realistic_indoor.building.building import Building
+    from realistic_indoor.validator.plan_sets import SkippedPlan
+
+__all__ = [
+    "PLAN_SUFFIXES",
+    "EnvSpec",
+    "EpisodeTask",
+    "make_env",
+    "make_tasks",
+    "parse_envs",
+    "readable_envs",
+    "task_key",
+]
 
 PLAN_SUFFIXES = (".xml", ".json")
-"""Files taken as plans when an environment names a folder."""
+"""Files taken as plans when an environment names a folder (``.wg.xml`` ends in ``.xml``)."""
 
 
 @dataclass(frozen=True)
@@ -67,16 +80,19 @@ class EpisodeTask:
 def parse_envs(tokens: list[str], kwargs: dict[str, Any] | None = None) -> list[EnvSpec]:
     """Environments from ``ID`` or ``ID:PLAN`` tokens, where ``PLAN`` is a plan file or a folder.
 
-    A folder gives one environment per plan file in it (sorted), grouped as ``ID:folder``.
+    A folder gives one environment per plan file below it (recursively, sorted, hidden files
+    left out), labelled ``ID:stem`` (``ID:sub/stem`` where two plans share a stem) and grouped
+    as ``ID:folder``. The plans are not read here: see :func:`readable_envs`.
 
     Args:
         tokens: E.g. ``["OfficeExplore-v0", "OfficeExplore-v0:../shared/data/real_floorplans/office"]``.
         kwargs: Keyword arguments of ``gym.make`` for every environment.
 
     Raises:
-        ConfigError: For an unknown id or a plan path that does not exist.
+        ConfigError: For an unknown id, a plan path that does not exist, or a folder without plans.
     """
     from realistic_indoor.envs import PRESETS
+    from realistic_indoor.validator.plan_sets import plan_files
 
     specs = []
     for token in tokens:
@@ -88,16 +104,67 @@ def parse_envs(tokens: list[str], kwargs: dict[str, Any] | None = None) -> list[
             continue
         path = Path(plan)
         if path.is_dir():
-            files = sorted(p for p in path.iterdir() if p.suffix.lower() in PLAN_SUFFIXES)
+            files = plan_files(path)
             if not files:
                 raise ConfigError(f"no plan files ({', '.join(PLAN_SUFFIXES)}) in folder {plan!r}")
             group = f"{env_id}:{path.name}"
-            specs += [EnvSpec(env_id, str(f), dict(kwargs or {}), group=group) for f in files]
+            specs += [
+                EnvSpec(env_id, str(f), dict(kwargs or {}), label=f"{env_id}:{name}", group=group)
+                for f, name in zip(files, _plan_names(path, files), strict=True)
+            ]
         elif path.is_file():
             specs.append(EnvSpec(env_id, str(path), dict(kwargs or {})))
         else:
             raise ConfigError(f"plan {plan!r} of {token!r} is neither a file nor a folder")
     return specs
+
+
+def _plan_names(folder: Path, files: list[Path]) -> list[str]:
+    """Each plan's stem, or its path below ``folder`` without the ending where stems repeat."""
+    stems = [f.stem for f in files]
+    return [
+        f.stem if stems.count(f.stem) == 1 else f.relative_to(folder).with_suffix("").as_posix()
+        for f in files
+    ]
+
+
+def readable_envs(specs: list[EnvSpec], strict: bool = False) -> tuple[list[EnvSpec], list[SkippedPlan]]:
+    """The environments whose plan can be read and used; the others are left out with a warning.
+
+    Each plan is read once (and kept for :func:`make_env` in this process). A plan that cannot
+    be read, or has no rooms, is left out with a
+    :class:`~realistic_indoor.validator.plan_sets.SkippedPlanWarning` naming it.
+
+    Args:
+        specs: The environments (those without a plan are kept as they are).
+        strict: Raise at the first plan that cannot be read, has no rooms, or would need repair
+            (floor-plan XML read with ``strict``), instead of leaving it out.
+
+    Returns:
+        The environments kept, in order, and the plans left out.
+
+    Raises:
+        PlanFormatError: Under ``strict``, for the first plan that cannot be read or used.
+        ConfigError: If every environment had a plan and none is left.
+    """
+    from realistic_indoor.validator.plan_sets import PlanBatch
+
+    plans = list(dict.fromkeys(s.plan for s in specs if s.plan is not None))
+    batch = PlanBatch(plans, strict=strict, reader=lambda p: _usable_plan(str(p), strict))
+    usable = {str(path) for path, _building in batch}
+    kept = [s for s in specs if s.plan is None or s.plan in usable]
+    if not kept:
+        first = batch.skipped[0]
+        raise ConfigError(f"none of the {len(plans)} plans can be used, e.g. {first.source}: {first.reason}")
+    return kept, batch.skipped
+
+
+def _usable_plan(path: str, strict: bool) -> Building:
+    """The plan at ``path``, read as :func:`make_env` reads it, if an environment can be built on it."""
+    building = _load_plan(path, strict)
+    if not building.rooms:
+        raise PlanFormatError(path, "the plan has no rooms")
+    return building
 
 
 def make_tasks(
@@ -115,6 +182,11 @@ def make_tasks(
     if isinstance(episodes, bool) or not isinstance(episodes, int) or episodes < 1:
         raise ConfigError(f"episodes must be an integer >= 1, got {episodes!r}")
     return [EpisodeTask(a, e, seed + i, **options) for a in agents for e in envs for i in range(episodes)]
+
+
+def task_key(task: EpisodeTask) -> tuple[str, str, int]:
+    """What identifies an episode in results: ``(agent, environment label, seed)``."""
+    return task.agent, task.env.label, task.seed
 
 
 def make_env(spec: EnvSpec) -> Any:
@@ -137,14 +209,12 @@ def make_env(spec: EnvSpec) -> Any:
 
 
 @functools.lru_cache(maxsize=64)
-def _load_plan(path: str) -> Any:
-    """A plan; floor-plan XML (real plans, without exterior doors) gets its entrances inferred."""
-    from realistic_indoor.io import load
-    from realistic_indoor.io.registry import format_of
+def _load_plan(path: str, strict: bool = False) -> Building:
+    """A plan; floor-plan XML (real plans, without exterior doors) gets its entrances inferred.
 
-    if format_of(path) == "floorplan":
-        try:
-            return load(path, infer_entrances=True)
-        except TypeError:  # a World Generator file named .xml: its reader has no such option
-            return load(path)
-    return load(path)
+    ``strict`` refuses a floor-plan XML plan that would need repair (see
+    :func:`~realistic_indoor.validator.plan_sets.read_plan`).
+    """
+    from realistic_indoor.validator.plan_sets import read_plan
+
+    return read_plan(path, strict=strict, infer_entrances=True)

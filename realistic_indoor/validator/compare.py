@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+import warnings
 from dataclasses import dataclass
 from itertools import combinations
 from typing import TYPE_CHECKING
@@ -10,23 +12,35 @@ from realistic_indoor.building.labels import BuildingType, SemanticLabel, parse_
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
 from realistic_indoor.validator.connectivity import set_connectivity
 from realistic_indoor.validator.label_inference import infer_labels, lacks_labels
-from realistic_indoor.validator.plan_sets import PlanSet, plan_problem
+from realistic_indoor.validator.plan_sets import PlanSet, SkippedPlanWarning, plan_problem
 from realistic_indoor.validator.reference import Reference, fitted_reference, paper_reference
 from realistic_indoor.validator.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.score import RealismScore, ScoreConfig, score_statistics
 from realistic_indoor.validator.tables import label_table
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
+    from collections.abc import Callable, Sequence
 
     from realistic_indoor.building.building import Building
     from realistic_indoor.validator.connectivity import Connectivity
     from realistic_indoor.validator.two_sample import TwoSampleResult
 
-__all__ = ["INFER_MODES", "Comparison", "SetReport", "common_building_type", "compare_sets", "prepare_set"]
+__all__ = [
+    "INFER_MODES",
+    "JUDGED_TYPES",
+    "Comparison",
+    "SetReport",
+    "common_building_type",
+    "compare_sets",
+    "judged_type",
+    "prepare_set",
+]
 
 INFER_MODES = ("auto", "always", "never")
 """When semantic labels are inferred: for plans that lack them, for every plan, or never."""
+
+JUDGED_TYPES: tuple[BuildingType, ...] = tuple(t for t in BuildingType if t is not BuildingType.UNKNOWN)
+"""The types plans can be judged as: those with a reference table (office, school, house)."""
 
 
 @dataclass(frozen=True)
@@ -40,7 +54,8 @@ class SetReport:
         score: Its realism score against the comparison's reference.
         scale_flags: Plans whose scale looks wrong.
         inferred: Sources of the plans whose semantic labels were inferred.
-        skipped: ``(source, reason)`` of plans left out.
+        skipped: ``(source, reason)`` of plans left out: those of its files that could not be
+            read, then those that cannot be measured.
     """
 
     plans: PlanSet
@@ -74,6 +89,8 @@ class Comparison:
             reference fitted from plans).
         notes: Things the reader should know (tests that could not run, ...).
         reference_set: The reference's plans, when it was fitted from plans.
+        reference_skipped: ``(source, reason)`` of the reference's plans left out (also in
+            ``notes``).
     """
 
     building_type: BuildingType
@@ -82,6 +99,24 @@ class Comparison:
     two_sample: tuple[TwoSampleResult, ...]
     notes: tuple[str, ...] = ()
     reference_set: PlanSet | None = None
+    reference_skipped: tuple[tuple[str, str], ...] = ()
+
+
+def judged_type(value: BuildingType | str) -> BuildingType:
+    """The building type named by ``value``, as plans can be judged: office, school or house.
+
+    Raises:
+        ConfigError: If ``value`` names no type, or ``unknown`` (which has no reference); the
+            message lists the valid types.
+    """
+    valid = ", ".join(t.value for t in JUDGED_TYPES)
+    try:
+        btype = parse_building_type(value)
+    except ConfigError:
+        raise ConfigError(f"unknown building type {value!r}; valid types: {valid}") from None
+    if btype not in JUDGED_TYPES:
+        raise ConfigError(f"plans cannot be judged as of type {btype.value!r}; choose one of: {valid}")
+    return btype
 
 
 def common_building_type(sets: Sequence[PlanSet]) -> BuildingType:
@@ -93,7 +128,7 @@ def common_building_type(sets: Sequence[PlanSet]) -> BuildingType:
     types = sorted({b.building_type.value for s in sets for b in s.buildings} - {BuildingType.UNKNOWN.value})
     if len(types) == 1:
         return BuildingType(types[0])
-    valid = ", ".join(t.value for t in BuildingType if t is not BuildingType.UNKNOWN)
+    valid = ", ".join(t.value for t in JUDGED_TYPES)
     if not types:
         raise ConfigError(
             f"the plans do not say what type of building they are; choose one with --type ({valid})"
@@ -118,7 +153,9 @@ def prepare_set(
 
     Returns:
         The prepared set, the sources of plans whose labels were inferred, and the
-        ``(source, reason)`` of plans left out.
+        ``(source, reason)`` of plans left out: the set's unreadable files (``plans.skipped``),
+        then the plans that cannot be measured (each also warned about with a
+        :class:`~realistic_indoor.validator.plan_sets.SkippedPlanWarning`).
 
     Raises:
         ConfigError: If the set is empty (or nothing is left after skipping), or ``infer`` is unknown.
@@ -128,15 +165,18 @@ def prepare_set(
         raise ConfigError(f"unknown label inference mode {infer!r}; valid: {', '.join(INFER_MODES)}")
     if not plans.buildings:
         raise ConfigError(f"set {plans.name!r} holds no plans")
-    kept, sources, inferred, skipped = [], [], [], []
+    kept, sources, inferred = [], [], []
+    skipped = [(s.source, s.reason) for s in plans.skipped]
     for b, src in zip(plans.buildings, plans.sources, strict=True):
         problem = plan_problem(b)
         if problem and not skip_bad:
             raise RealisticIndoorError(
-                f"{src}: {problem}; fix or remove it (or leave such plans out with --skip-bad)"
+                f"{src}: {problem}; fix or remove it (or leave such plans out: skip_bad=True in Python, "
+                "or the command without --strict)"
             )
         if problem:
             skipped.append((src, problem))
+            warnings.warn(f"skipped {src}: {problem}", SkippedPlanWarning, stacklevel=2)
             continue
         if infer == "always" or (infer == "auto" and lacks_labels(b)):
             b = infer_labels(b, building_type)
@@ -172,17 +212,18 @@ def _report(
 
 def _reference(
     reference: str | Reference | PlanSet, btype: BuildingType, infer: str, skip_bad: bool
-) -> tuple[Reference, PlanSet | None]:
+) -> tuple[Reference, PlanSet | None, tuple[tuple[str, str], ...]]:
+    """The reference, its prepared plans (when fitted from plans) and its plans left out."""
     if isinstance(reference, Reference):
-        return reference, None
+        return reference, None, ()
     if isinstance(reference, PlanSet):
-        prepared, _inferred, _skipped = prepare_set(reference, btype, infer, skip_bad)
-        return fitted_reference(prepared.buildings, prepared.name, btype), prepared
-    return paper_reference(btype if reference == "paper" else reference), None
+        prepared, _inferred, skipped = prepare_set(reference, btype, infer, skip_bad)
+        return fitted_reference(prepared.buildings, prepared.name, btype), prepared, skipped
+    return paper_reference(btype if reference == "paper" else reference), None, ()
 
 
 def _two_sample_tests(
-    named: Sequence[PlanSet], seed: int, with_area: bool
+    named: Sequence[PlanSet], seed: int, with_area: bool, tick: Callable[[str], object]
 ) -> tuple[list[TwoSampleResult], list[str]]:
     from realistic_indoor.validator.two_sample import two_sample_test
 
@@ -191,10 +232,27 @@ def _two_sample_tests(
         if min(len(a), len(b)) < 2:
             notes.append(f"no two-sample test of {a.name} vs {b.name}: it needs at least 2 plans in each set")
             continue
+        tick(f"two-sample test {a.name} vs {b.name}")
         results.append(
             two_sample_test(a.buildings, b.buildings, names=(a.name, b.name), seed=seed, with_area=with_area)
         )
     return results, notes
+
+
+def _steps(total: int, show: bool) -> tuple[Callable[[str], object], Callable[[], object]]:
+    """A progress bar on stderr of ``total`` steps: ``tick(what)`` starts the next one; ``close()``."""
+    from tqdm import tqdm
+
+    bar = tqdm(total=total, unit="step", disable=not show, leave=False, bar_format="{desc} {n}/{total} {bar}")
+    started = [False]
+
+    def tick(what: str) -> None:
+        if started[0]:
+            bar.update(1)
+        started[0] = True
+        bar.set_description_str(what)
+
+    return tick, bar.close
 
 
 def compare_sets(
@@ -208,6 +266,7 @@ def compare_sets(
     two_sample: bool = True,
     two_sample_area: bool = False,
     score_config: ScoreConfig | None = None,
+    progress: bool = False,
 ) -> Comparison:
     """Measure every set against a reference, and the sets against each other.
 
@@ -224,9 +283,11 @@ def compare_sets(
         two_sample_area: Let the two-sample tests use room areas too (default: scale-free
             features only).
         score_config: Constants of the realism score (default :class:`ScoreConfig`).
+        progress: Show on stderr which set or test is being measured (a tqdm bar).
 
     Raises:
-        ConfigError: If there is no set, a set is empty, the type is unknown or ambiguous.
+        ConfigError: If there is no set, a set is empty, the type is unknown (or ``unknown``:
+            see :func:`judged_type`) or ambiguous.
         RealisticIndoorError: If a plan cannot be measured and ``skip_bad`` is false.
     """
     if not sets:
@@ -238,17 +299,30 @@ def compare_sets(
         ref_sets = [reference] if isinstance(reference, PlanSet) else []
         btype = common_building_type([*sets, *ref_sets])
     else:
-        btype = parse_building_type(building_type)
-    ref, ref_set = _reference(reference, btype, infer, skip_bad)
-    cfg = score_config or ScoreConfig()
-    reports = tuple(_report(s, btype, ref, infer, skip_bad, cfg) for s in sets)
-    notes: list[str] = []
-    tests: list[TwoSampleResult] = []
-    if two_sample:
-        named = [r.plans for r in reports] + ([ref_set] if ref_set is not None else [])
-        tests, notes = _two_sample_tests(named, seed, two_sample_area)
-        if len(named) < 2:
-            notes.append(
-                "no two-sample test: it compares two sets of plans (give a second set or --reference DIR)"
-            )
-    return Comparison(btype, ref, reports, tuple(tests), tuple(notes), ref_set)
+        btype = judged_type(building_type)
+    n_named = len(sets) + isinstance(reference, PlanSet)
+    tick, close = _steps(
+        len(sets) + isinstance(reference, PlanSet) + two_sample * math.comb(n_named, 2), progress
+    )
+    try:
+        if isinstance(reference, PlanSet):
+            tick(f"measuring reference {reference.name}")
+        ref, ref_set, ref_skipped = _reference(reference, btype, infer, skip_bad)
+        notes = [f"reference {ref.name}: left out {src}: {why}" for src, why in ref_skipped]
+        cfg = score_config or ScoreConfig()
+        reports = []
+        for s in sets:
+            tick(f"measuring {s.name}")
+            reports.append(_report(s, btype, ref, infer, skip_bad, cfg))
+        tests: list[TwoSampleResult] = []
+        if two_sample:
+            named = [r.plans for r in reports] + ([ref_set] if ref_set is not None else [])
+            tests, test_notes = _two_sample_tests(named, seed, two_sample_area, tick)
+            notes += test_notes
+            if len(named) < 2:
+                notes.append(
+                    "no two-sample test: it compares two sets of plans (give a second set or --reference DIR)"
+                )
+    finally:
+        close()
+    return Comparison(btype, ref, tuple(reports), tuple(tests), tuple(notes), ref_set, ref_skipped)

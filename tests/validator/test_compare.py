@@ -2,8 +2,8 @@ import pytest
 
 from realistic_indoor.building import Building, BuildingType, Room, SemanticLabel
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
-from realistic_indoor.validator.compare import common_building_type, compare_sets, prepare_set
-from realistic_indoor.validator.plan_sets import PlanSet
+from realistic_indoor.validator.compare import common_building_type, compare_sets, judged_type, prepare_set
+from realistic_indoor.validator.plan_sets import PlanSet, SkippedPlan, SkippedPlanWarning
 from realistic_indoor.validator.reference import paper_reference
 
 
@@ -69,9 +69,10 @@ def test_compare_sets__infers_labels_of_unlabelled_plans(maze_office, strip_labe
 
 def test_compare_sets__plan_without_doors_is_a_clear_error_or_skipped(mazes):
     bad = PlanSet("bad", (*mazes.buildings, _doorless()), (*mazes.sources, "doorless.json"))
-    with pytest.raises(RealisticIndoorError, match=r"doorless.json: the plan has no doors.*--skip-bad"):
+    with pytest.raises(RealisticIndoorError, match=r"doorless.json: the plan has no doors.*skip_bad=True"):
         compare_sets([bad], "office")
-    c = compare_sets([bad], "office", skip_bad=True, two_sample=False)
+    with pytest.warns(SkippedPlanWarning, match=r"^skipped doorless.json: the plan has no doors"):
+        c = compare_sets([bad], "office", skip_bad=True, two_sample=False)
     assert len(c.sets[0].plans) == 4
     assert c.sets[0].skipped[0][0] == "doorless.json"
 
@@ -87,7 +88,10 @@ def test_compare_sets__bad_input_messages(mazes):
         compare_sets([mazes], "office", reference="mall")
     with pytest.raises(ConfigError, match="same name"):
         compare_sets([mazes, mazes], "office")
-    with pytest.raises(ConfigError, match=r"all 1 left out, e\.g\. doorless\.json: the plan has no doors"):
+    with (
+        pytest.raises(ConfigError, match=r"all 1 left out, e\.g\. doorless\.json: the plan has no doors"),
+        pytest.warns(SkippedPlanWarning),
+    ):
         prepare_set(PlanSet.of("x", [_doorless()]), "office", skip_bad=True)
     with pytest.raises(ConfigError, match="unknown label inference mode"):
         prepare_set(mazes, "office", infer="sometimes")
@@ -106,3 +110,27 @@ def test_compare_sets__scale_flags_use_the_plan_type(maze_office, scaled):
     big = PlanSet.of("big", [scaled(maze_office, 10.0), maze_office])
     (flag,) = compare_sets([big], "office", two_sample=False).sets[0].scale_flags
     assert flag.length_factor == pytest.approx((18.5 / 1600) ** 0.5)
+
+
+def test_judged_type__valid_types_are_the_three_with_a_reference():
+    assert judged_type("School") is BuildingType.SCHOOL
+    with pytest.raises(ConfigError) as e:
+        judged_type("castle")
+    assert str(e.value) == "unknown building type 'castle'; valid types: office, school, house"
+    with pytest.raises(
+        ConfigError, match=r"cannot be judged as of type 'unknown'; choose one of: office, school, house$"
+    ):
+        judged_type("unknown")
+
+
+def test_compare_sets__unreadable_plans_of_sets_and_reference_are_reported(mazes, tidy):
+    """Plans a set could not read come first among its left-out plans; the reference's go to notes."""
+    broken = PlanSet(
+        mazes.name, mazes.buildings, mazes.sources, (SkippedPlan("broken.xml", "malformed XML"),)
+    )
+    ref = PlanSet(tidy.name, tidy.buildings, tidy.sources, (SkippedPlan("empty.json", "no rooms key"),))
+    c = compare_sets([broken], "office", reference=ref, two_sample=False)
+    assert c.sets[0].skipped == (("broken.xml", "malformed XML"),)
+    assert len(c.sets[0].plans) == 4
+    assert c.reference_skipped == (("empty.json", "no rooms key"),)
+    assert "reference tidy: left out empty.json: no rooms key" in c.notes

@@ -1,8 +1,21 @@
+import sys
+from pathlib import Path
+
 import pytest
 
 from realistic_indoor.building import Building, Room
 from realistic_indoor.errors import ConfigError, PlanFormatError
-from realistic_indoor.validator.plan_sets import PlanSet, load_plan_set, plan_files, plan_problem
+from realistic_indoor.validator.plan_sets import (
+    PlanBatch,
+    PlanSet,
+    SkippedPlan,
+    SkippedPlanWarning,
+    load_plan_set,
+    plan_files,
+    plan_problem,
+    show_progress,
+    skipped_summary,
+)
 
 
 def test_plan_files__folder_keeps_readable_plans_only(plan_folders):
@@ -35,10 +48,58 @@ def test_load_plan_set__empty_folder_says_so(tmp_path):
         load_plan_set(tmp_path / "empty")
 
 
-def test_load_plan_set__unreadable_plan_names_the_file(tmp_path):
+@pytest.fixture
+def folder_with_broken(tmp_path, tiny_office):
+    """``plans/``: two good JSON plans and an empty ``broken.xml`` between them (sorted order)."""
+    from realistic_indoor.io import save
+
+    folder = tmp_path / "plans"
+    save(tiny_office, folder / "a.json")
+    save(tiny_office, folder / "c.json")
+    (folder / "broken.xml").write_text("")
+    return folder
+
+
+def test_load_plan_set__unreadable_plan_is_left_out_with_a_warning(folder_with_broken):
+    broken = folder_with_broken / "broken.xml"
+    with pytest.warns(SkippedPlanWarning) as caught:
+        s = load_plan_set(folder_with_broken)
+    reason = "malformed XML at line 1, column 1: no element found"
+    assert [str(w.message) for w in caught] == [f"skipped {broken}: {reason}"]
+    assert [Path(src).name for src in s.sources] == ["a.json", "c.json"]
+    assert s.skipped == (SkippedPlan(str(broken), reason),)
+
+
+def test_load_plan_set__strict_stops_at_the_first_unreadable_plan(folder_with_broken):
+    with pytest.raises(PlanFormatError, match=r"broken\.xml: malformed XML"):
+        load_plan_set(folder_with_broken, strict=True)
+
+
+def test_load_plan_set__no_plan_readable_is_an_error(tmp_path):
     (tmp_path / "bad.json").write_text("{not json")
-    with pytest.raises(PlanFormatError, match=r"bad\.json"):
+    with (
+        pytest.warns(SkippedPlanWarning, match=r"bad\.json"),
+        pytest.raises(ConfigError, match=r"none of its 1 plans can be read, e\.g\. .*bad\.json: "),
+    ):
         load_plan_set(tmp_path)
+
+
+def test_plan_batch__counts_what_it_skipped(folder_with_broken):
+    batch = PlanBatch(plan_files(folder_with_broken))
+    with pytest.warns(SkippedPlanWarning):
+        names = [path.name for path, _b in batch]
+    assert names == ["a.json", "c.json"]
+    assert batch.summary() == "skipped 1 of 3 plans: broken.xml"
+    assert PlanBatch([folder_with_broken / "a.json"]).summary() is None
+    assert skipped_summary([SkippedPlan("x/y.json", "?")], 1) == "skipped 1 of 1 plan: y.json"
+
+
+def test_show_progress__only_on_a_terminal_and_not_quiet(monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert show_progress() is True
+    assert show_progress(quiet=True) is False
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: False)
+    assert show_progress() is False
 
 
 def test_plan_set_of__sources_from_metadata(maze_office, tiny_office):

@@ -14,10 +14,23 @@ if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
     from realistic_indoor.building.door import Door
 
-__all__ = ["Finding", "InvalidBuildingError", "check_building"]
+__all__ = [
+    "MIN_DOOR_WIDTH_M",
+    "OVERLAP_TOLERANCE_M2",
+    "WALL_TOLERANCE_M",
+    "Finding",
+    "InvalidBuildingError",
+    "check_building",
+]
 
 MIN_DOOR_WIDTH_M = 0.6
 """Narrowest doorway a person or a small robot passes through (m)."""
+
+WALL_TOLERANCE_M = 0.05
+"""How far a door centre may lie from a room's outline unless the building says otherwise (m)."""
+
+OVERLAP_TOLERANCE_M2 = 0.01
+"""Overlap area below which two rooms count as touching (m2)."""
 
 
 @dataclass(frozen=True)
@@ -51,8 +64,8 @@ def check_building(
     building: Building,
     *,
     min_door_width_m: float = MIN_DOOR_WIDTH_M,
-    wall_tolerance_m: float = 0.05,
-    overlap_tolerance_m2: float = 0.01,
+    wall_tolerance_m: float | None = None,
+    overlap_tolerance_m2: float = OVERLAP_TOLERANCE_M2,
     require_entrance: bool = True,
     raise_on_error: bool = False,
 ) -> list[Finding]:
@@ -66,8 +79,12 @@ def check_building(
     Args:
         building: The building to check.
         min_door_width_m: Narrowest allowed door (m).
-        wall_tolerance_m: How far a door centre may lie from a room's outline (m); real plans
-            with thick walls need more than generated ones.
+        wall_tolerance_m: How far a door centre may lie from a room's outline (m). ``None``:
+            the building's ``metadata["wall_tolerance_m"]`` when it has one, else
+            :data:`WALL_TOLERANCE_M` (0.05 m). The floor-plan XML reader records 0.3 m for real
+            plans that draw walls as gaps between rooms' outlines: a door's cut through its wall
+            reaches that far on either side (``realistic_indoor.building.walls.DOOR_GAP_DEPTH_M``),
+            so such a door still joins its two rooms.
         overlap_tolerance_m2: Overlap area below which two rooms count as touching (m2).
         require_entrance: Report a building with no exterior door.
         raise_on_error: Raise :class:`InvalidBuildingError` when anything is found.
@@ -78,6 +95,8 @@ def check_building(
     Raises:
         InvalidBuildingError: If ``raise_on_error`` and the building is invalid.
     """
+    if wall_tolerance_m is None:
+        wall_tolerance_m = float(building.metadata.get("wall_tolerance_m", WALL_TOLERANCE_M))
     findings: list[Finding] = []
     findings += _check_ids(building)
     findings += _check_polygons(building)

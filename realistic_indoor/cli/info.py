@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+from realistic_indoor.cli._plans import add_plan_options, load_plan
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -17,7 +17,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument("plan", help="plan file (.json, floor-plan .xml, World Generator .wg.xml)")
     p.add_argument("--check", action="store_true", help="also list violated invariants")
-    add_infer_entrances(p)
+    add_plan_options(p)
     p.set_defaults(func=run)
 
 
@@ -29,6 +29,11 @@ def run(args: argparse.Namespace) -> int:
     if args.check:
         findings = b.validate()
         print(f"invariants: {'all hold' if not findings else f'{len(findings)} violated'}")
+        if "wall_tolerance_m" in b.metadata:
+            print(
+                f"  (doors checked within {b.metadata['wall_tolerance_m']} m of their rooms' outlines: "
+                "this plan draws walls as gaps between rooms)"
+            )
         for f in findings:
             print(f"  {f}")
         return 1 if findings else 0

@@ -49,13 +49,22 @@ def _module(fmt: str):
     return importlib.import_module(f"realistic_indoor.io.{FORMATS[fmt][1]}")
 
 
-def load(path: str | Path, fmt: str | None = None, **options: Any) -> Building:
+def load(path: str | Path, fmt: str | None = None, *, strict: bool = False, **options: Any) -> Building:
     """Read a building from ``path``; the format comes from the ending unless ``fmt`` is given.
 
     A ``.xml`` file whose root element is ``<world>`` is read as World Generator XML.
 
+    Args:
+        path: The file.
+        fmt: A format name of :data:`FORMATS`, to override the one the ending gives.
+        strict: Floor-plan XML: refuse a plan whose portals or outlines contradict each other
+            (raise) instead of repairing it with a ``PlanRepairWarning``. Other formats are read
+            as they are either way.
+        **options: Passed to the format's reader (e.g. ``infer_entrances=True``).
+
     Raises:
-        PlanFormatError: If the file is missing, unreadable or malformed.
+        PlanFormatError: If the file is missing, unreadable or malformed, or, with ``strict``,
+            has a defect the reader would repair.
     """
     path = Path(path)
     if not path.is_file():
@@ -67,6 +76,8 @@ def load(path: str | Path, fmt: str | None = None, **options: Any) -> Building:
         raise PlanFormatError(
             path, f"{fmt} files can be written but not read; readable: {', '.join(READABLE)}"
         )
+    if strict and fmt == "floorplan":
+        options["strict"] = True
     return _module(fmt).read(path, **options)
 
 

@@ -11,6 +11,9 @@ from realistic_indoor.building import BuildingType
 from realistic_indoor.cli import main
 from realistic_indoor.io import load
 
+# The plans' overlapping outlines are repaired with a warning each (tests/io/test_plan_repairs.py).
+pytestmark = pytest.mark.filterwarnings("ignore::realistic_indoor.io.floorplan.PlanRepairWarning")
+
 REAL_PLANS = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "real_floorplans"
 ALL_PLANS = sorted(p.relative_to(REAL_PLANS).as_posix() for p in REAL_PLANS.glob("*/*.xml"))
 

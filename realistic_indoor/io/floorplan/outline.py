@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["MAX_SLIVER_FRACTION", "OutlineError", "clean_ring", "repair_outline"]
+__all__ = ["MAX_SLIVER_FRACTION", "OutlineError", "clean_ring", "polygon_pieces", "repair_outline"]
 
 Point = tuple[float, float]
 
@@ -112,7 +112,7 @@ def _repair_crossing(poly, why: str, m_per_px: float, max_fraction: float) -> tu
     import shapely
     from shapely.geometry import Polygon
 
-    pieces = [g for g in _polygons(shapely.make_valid(poly)) if g.area > 0]
+    pieces = [g for g in polygon_pieces(shapely.make_valid(poly)) if g.area > 0]
     if not pieces:
         raise OutlineError(f"the outline is not a polygon ({why}) and encloses no area", True)
     merged = shapely.unary_union(pieces)
@@ -138,7 +138,8 @@ def _repair_crossing(poly, why: str, m_per_px: float, max_fraction: float) -> tu
     return clean_ring(list(main.exterior.coords)), note
 
 
-def _polygons(geom) -> list:
+def polygon_pieces(geom) -> list:
+    """The polygons of a shapely geometry (itself, or those of a collection, recursively)."""
     if geom.geom_type == "Polygon":
         return [geom]
-    return [p for g in getattr(geom, "geoms", []) for p in _polygons(g)]
+    return [p for g in getattr(geom, "geoms", []) for p in polygon_pieces(g)]

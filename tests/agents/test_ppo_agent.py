@@ -13,12 +13,16 @@ from realistic_indoor.errors import ConfigError
 pytest.importorskip("stable_baselines3")
 
 
+LOG_LINES: list[str] = []
+
+
 @pytest.fixture(scope="module")
 def model_path(tmp_path_factory):
     from realistic_indoor.agents.rl import train_ppo
 
     path = tmp_path_factory.mktemp("ppo") / "smoke.zip"
-    result = train_ppo(ppo_preset("smoke", env_ids=("HouseExplore-v0",)), path, log=lambda line: None)
+    config = ppo_preset("smoke", env_ids=("HouseExplore-v0",))
+    result = train_ppo(config, path, log=LOG_LINES.append, progress=True, log_every=128)
     assert result.model_path == path and result.timesteps >= 256
     return path
 
@@ -26,6 +30,13 @@ def model_path(tmp_path_factory):
 def test_train_ppo__saves_the_model_and_its_config(model_path):
     meta = json.loads(model_path.with_suffix(".json").read_text())
     assert meta["config"]["env_ids"] == ["HouseExplore-v0"] and meta["timesteps"] >= 256
+    assert [point["timesteps"] for point in meta["curve"]] == [128, 256]
+    assert not list(model_path.parent.glob(".*tmp*"))  # no temporary file left behind
+
+
+def test_train_ppo__logs_steps_episodes_and_coverage(model_path):
+    assert len(LOG_LINES) == 2 and LOG_LINES[-1].split()[:2] == ["256", "steps"]
+    assert "episodes  coverage (last 50)" in LOG_LINES[-1]
 
 
 @pytest.mark.parametrize("action_type", ["continuous", "discrete"])

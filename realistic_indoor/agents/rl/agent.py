@@ -27,7 +27,7 @@ def load_model(path: str | Path) -> Any:
     key = str(Path(path).resolve())
     if key not in _MODELS:
         if not Path(path).is_file():
-            raise ConfigError(f"PPO model {str(path)!r} not found (train one with experiments/train_ppo.py)")
+            raise ConfigError(f"PPO model {str(path)!r} not found (train one with: realistic-indoor train)")
         torch, sb3 = require_rl()
         torch.set_num_threads(1)
         try:
@@ -35,7 +35,7 @@ def load_model(path: str | Path) -> Any:
         except (ValueError, KeyError, OSError, RuntimeError, zipfile.BadZipFile) as e:
             raise ConfigError(
                 f"{str(path)!r} is not a stable-baselines3 PPO model ({type(e).__name__}: {e}); "
-                "train one with experiments/train_ppo.py"
+                "train one with: realistic-indoor train"
             ) from None
     return _MODELS[key]
 

@@ -1,4 +1,4 @@
-"""Configuration of PPO training: environments, budget and hyper-parameters, with presets."""
+"""PPO training (environments, budget, hyper-parameters) and its evaluation: configs and presets."""
 
 from __future__ import annotations
 
@@ -9,10 +9,23 @@ from typing import Any
 from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["PPO_PRESETS", "PPOConfig", "ppo_preset"]
+__all__ = [
+    "ENV_SETS",
+    "PPO_EVAL_PRESETS",
+    "PPO_PRESETS",
+    "EvalPlan",
+    "PPOConfig",
+    "env_ids_of",
+    "ppo_preset",
+]
 
 REALISTIC_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
 RANDOM_IDS = ("RandomExplore-v0",)
+ENV_SETS: dict[str, tuple[str, ...]] = {"realistic": REALISTIC_IDS, "random": RANDOM_IDS}
+"""Named sets of training ids: ``realistic`` (offices, schools, houses) and ``random`` (the baseline)."""
+TRAINING_AREAS_M2: dict[str, float] = {"office": 600.0, "school": 900.0, "house": 150.0, "random": 600.0}
+"""Floor area per building type while training (m2): smaller than the generators' defaults, so
+that training episodes see whole buildings."""
 
 
 @dataclass(frozen=True)
@@ -47,9 +60,7 @@ class PPOConfig:
     """
 
     env_ids: tuple[str, ...] = REALISTIC_IDS
-    areas_m2: Mapping[str, float] = field(
-        default_factory=lambda: {"office": 600.0, "school": 900.0, "house": 150.0, "random": 600.0}
-    )
+    areas_m2: Mapping[str, float] = field(default_factory=lambda: dict(TRAINING_AREAS_M2))
     max_steps: int = 600
     action_type: str = "discrete"
     obs_keys: tuple[str, ...] = ("scan", "local_map", "velocity")
@@ -89,6 +100,7 @@ class PPOConfig:
             "torch_threads",
         ):
             require_int("PPOConfig", name, getattr(self, name), 1)
+        require_int("PPOConfig", "seed", self.seed, 0)
         require_positive("PPOConfig", "learning_rate", self.learning_rate, "")
         require_range("PPOConfig", "gamma", self.gamma, 0.0, 1.0, "")
         require_range("PPOConfig", "gae_lambda", self.gae_lambda, 0.0, 1.0, "")
@@ -129,7 +141,8 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
     },
 }
 """Named overrides of :class:`PPOConfig`: ``default`` (about 20 minutes on 2 CPU cores),
-``long`` (3 M steps on bigger buildings: hours; better explorers), ``smoke`` (seconds, for tests)."""
+``long`` (3 M steps on bigger buildings: hours; better explorers), ``smoke`` (256 steps: checks
+the set-up in seconds, and the tests use it)."""
 
 
 def ppo_preset(name: str, **changes: Any) -> PPOConfig:
@@ -141,3 +154,80 @@ def ppo_preset(name: str, **changes: Any) -> PPOConfig:
     if name not in PPO_PRESETS:
         raise ConfigError(f"unknown PPO preset {name!r}; presets: {', '.join(PPO_PRESETS)}")
     return PPOConfig(**{**PPO_PRESETS[name], **changes})
+
+
+@dataclass(frozen=True)
+class EvalPlan:
+    """The evaluation after a training run: the PPO agent against baselines on the training ids.
+
+    Attributes:
+        episodes: Episodes (seeds) per agent and id; 0 skips the evaluation.
+        max_steps: Step limit of each episode (control steps of 0.2 s); ``None`` keeps each id's
+            own limit (6,000 for offices, schools and random maps, 1,000 for houses).
+        areas_m2: Floor area per building type (m2); ``None`` keeps the generators' default
+            sizes, on which the ids' step limits were measured.
+        baselines: Agents the PPO agent is compared with.
+        seed: First seed of the episodes (apart from the training seeds).
+    """
+
+    episodes: int
+    max_steps: int | None = None
+    areas_m2: Mapping[str, float] | None = None
+    baselines: tuple[str, ...] = ("random", "frontier")
+    seed: int = 1000
+
+    def __post_init__(self) -> None:
+        require_int("EvalPlan", "episodes", self.episodes, 0)
+        if self.max_steps is not None:
+            require_int("EvalPlan", "max_steps", self.max_steps, 1)
+        require_int("EvalPlan", "seed", self.seed, 0)
+        if self.areas_m2 is not None:
+            for building_type, area in self.areas_m2.items():
+                require_positive("EvalPlan", f"areas_m2[{building_type!r}]", area, "m2")
+            object.__setattr__(self, "areas_m2", dict(self.areas_m2))
+
+    def replace(self, **changes: Any) -> EvalPlan:
+        """A copy with some fields changed (checked again)."""
+        return replace(self, **changes)
+
+    def describe(self) -> str:
+        """The plan in words, e.g. ``"1 episode per id (at most 50 steps, training-size buildings)"``."""
+        episodes = f"{self.episodes} episode{'s' if self.episodes != 1 else ''} per id"
+        limit = "the ids' step limits" if self.max_steps is None else f"at most {self.max_steps} steps"
+        sizes = "default-size buildings" if self.areas_m2 is None else "training-size buildings"
+        return f"{episodes} ({limit}, {sizes})"
+
+
+PPO_EVAL_PRESETS: dict[str, EvalPlan] = {
+    "default": EvalPlan(episodes=2),
+    "long": EvalPlan(episodes=10),
+    "smoke": EvalPlan(episodes=1, max_steps=50, areas_m2=TRAINING_AREAS_M2),
+}
+"""The evaluation after each preset's training, on default-size buildings at the ids' step limits:
+``default`` 2 episodes per agent and id (140 CPU-seconds: 2 to 6 minutes on 2 cores), ``long`` 10;
+``smoke`` 1 episode of 50 steps on training-size buildings (seconds: it checks that the model
+loads and acts, not how well)."""
+
+
+def env_ids_of(envs: str, option: str = "--envs") -> tuple[str, ...]:
+    """The ids of ``envs``: a name of :data:`ENV_SETS`, or comma-separated registered ids.
+
+    Args:
+        envs: ``"realistic"``, ``"random"``, or ids such as ``"OfficeExplore-v0,HouseExplore-v0"``.
+        option: How the user gave ``envs``, named in the error.
+
+    Raises:
+        ConfigError: If ``envs`` names no set and holds an unknown id or none.
+    """
+    from realistic_indoor.envs import PRESETS
+
+    if envs in ENV_SETS:
+        return ENV_SETS[envs]
+    ids = tuple(dict.fromkeys(e.strip() for e in envs.split(",") if e.strip()))
+    unknown = [e for e in ids if e not in PRESETS]
+    if not ids or unknown:
+        what = f"unknown id {', '.join(map(repr, unknown))}" if unknown else "no id given"
+        raise ConfigError(
+            f"{option}: {what}; use {' or '.join(ENV_SETS)}, or comma-separated ids of {', '.join(PRESETS)}"
+        )
+    return ids

@@ -7,6 +7,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from realistic_indoor.agents.rl.config import PPOConfig
 from realistic_indoor.agents.rl.envs import make_vec_env
@@ -34,50 +35,37 @@ class TrainResult:
     last_coverage: float
 
 
-def train_ppo(config: PPOConfig, out_path: str | Path, log: Callable[[str], object] = print) -> TrainResult:
+def train_ppo(
+    config: PPOConfig,
+    out_path: str | Path,
+    log: Callable[[str], object] = print,
+    progress: bool = False,
+    log_every: int = 10_000,
+) -> TrainResult:
     """Train PPO on ``config.env_ids`` and save the model to ``out_path`` (``.zip``).
+
+    The model and its ``.json`` are written whole or not at all (an interrupted run leaves any
+    earlier file at ``out_path`` as it was).
 
     Args:
         config: The training run.
         out_path: Where to save the model; the config and training curve go to the same
             name with ``.json``.
-        log: Receives a progress line about every 10,000 steps.
+        log: Receives a progress line (steps, seconds, episodes, mean coverage) every
+            ``log_every`` steps and at the end.
+        progress: Also show a progress bar (tqdm, on stderr, only when it is a terminal) with
+            the episodes finished and their mean coverage.
+        log_every: Environment steps between two progress lines (and points of the curve).
 
     Raises:
         ConfigError: If stable-baselines3 or torch are missing (``pip install "realistic-indoor[rl]"``).
     """
     torch, sb3 = require_rl()
-    from stable_baselines3.common.callbacks import BaseCallback
-
     torch.set_num_threads(config.torch_threads)
     out_path = Path(out_path).with_suffix(".zip")
     out_path.parent.mkdir(parents=True, exist_ok=True)
     venv = make_vec_env(config)
-    curve: list[dict[str, float]] = []
-
-    class Progress(BaseCallback):
-        def __init__(self) -> None:
-            super().__init__()
-            self.start = time.perf_counter()
-            self.next_log = 0
-            self.coverages: list[float] = []
-
-        def _on_step(self) -> bool:
-            for info in self.locals["infos"]:
-                if "episode" in info:
-                    self.coverages.append(float(info["coverage"]))
-            if self.num_timesteps >= self.next_log:
-                self.next_log += 10_000
-                recent = self.coverages[-50:]
-                mean = sum(recent) / len(recent) if recent else float("nan")
-                elapsed = time.perf_counter() - self.start
-                curve.append({"timesteps": self.num_timesteps, "seconds": elapsed, "coverage": mean})
-                log(
-                    f"{self.num_timesteps:>9} steps  {elapsed:7.0f} s  {len(self.coverages):5d} episodes  "
-                    f"coverage (last 50) {mean:.3f}"
-                )
-            return True
-
+    tracker = _progress_callback(config.total_timesteps, log, progress, log_every)
     model = sb3.PPO(
         "MultiInputPolicy",
         venv,
@@ -93,33 +81,87 @@ def train_ppo(config: PPOConfig, out_path: str | Path, log: Callable[[str], obje
         device="cpu",
         verbose=0,
     )
-    progress = Progress()
     start = time.perf_counter()
     try:
-        model.learn(total_timesteps=config.total_timesteps, callback=progress)
+        model.learn(total_timesteps=config.total_timesteps, callback=tracker)
     finally:
         venv.close()
     seconds = time.perf_counter() - start
     with atomic_path(out_path) as tmp:
         model.save(tmp)
-    recent = progress.coverages[-50:]
-    result = TrainResult(
-        out_path,
-        int(model.num_timesteps),
-        seconds,
-        len(progress.coverages),
-        sum(recent) / len(recent) if recent else float("nan"),
-    )
+    result = TrainResult(out_path, int(model.num_timesteps), seconds, len(tracker.coverages), tracker.mean())
     meta = {
         "config": config.to_dict(),
         "timesteps": result.timesteps,
         "seconds": round(seconds, 1),
         "episodes": result.episodes,
         "last_coverage": result.last_coverage,
-        "curve": curve,
+        "curve": tracker.curve,
     }
     write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
     return result
+
+
+def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_every: int) -> Any:
+    """A stable-baselines3 callback that collects episode coverages, logs lines and drives a bar.
+
+    Args:
+        total: Environment steps of the run (the bar's length).
+        log: Receives the progress lines.
+        bar: Show a tqdm bar (on stderr, when it is a terminal).
+        log_every: Steps between two progress lines.
+    """
+    from stable_baselines3.common.callbacks import BaseCallback
+    from tqdm import tqdm
+
+    class Progress(BaseCallback):
+        """Coverage of the finished episodes; a line every ``log_every`` steps and at the end."""
+
+        def __init__(self) -> None:
+            super().__init__()
+            self.start = time.perf_counter()
+            self.next_log = log_every
+            self.coverages: list[float] = []
+            self.curve: list[dict[str, float]] = []
+            self.bar = tqdm(disable=True)
+
+        def mean(self) -> float:
+            """Mean final coverage of the last 50 episodes (NaN before the first ends)."""
+            recent = self.coverages[-50:]
+            return sum(recent) / len(recent) if recent else float("nan")
+
+        def _on_training_start(self) -> None:
+            self.start = time.perf_counter()
+            self.bar = tqdm(total=total, unit="step", desc="training PPO", disable=None if bar else True)
+
+        def _on_step(self) -> bool:
+            ended = [float(i["coverage"]) for i in self.locals["infos"] if "episode" in i]
+            self.coverages.extend(ended)
+            self.bar.update(self.num_timesteps - self.bar.n)
+            if ended:
+                self.bar.set_postfix_str(f"{len(self.coverages)} episodes, coverage {self.mean():.3f}")
+            if self.num_timesteps >= self.next_log:
+                self.next_log += log_every
+                self._log()
+            return True
+
+        def _on_training_end(self) -> None:
+            if not self.curve or self.curve[-1]["timesteps"] != self.num_timesteps:
+                self._log()
+            self.bar.close()
+
+        def _log(self) -> None:
+            elapsed = time.perf_counter() - self.start
+            mean = self.mean()
+            self.curve.append({"timesteps": self.num_timesteps, "seconds": elapsed, "coverage": mean})
+            line = (
+                f"{self.num_timesteps:>9} steps  {elapsed:7.0f} s  {len(self.coverages):5d} episodes  "
+                f"coverage (last 50) {mean:.3f}"
+            )
+            with tqdm.external_write_mode():
+                log(line)
+
+    return Progress()
 
 
 def require_rl():

@@ -1,0 +1,253 @@
+"""``realistic-indoor train``: train a PPO explorer on a mix of building types, then evaluate it.
+
+``experiments/train_ppo.py`` is a thin wrapper over this module (same options, same defaults).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from realistic_indoor.errors import ConfigError
+
+RUNS_DIR = Path("runs")
+"""Where models go by default (ignored by git)."""
+
+_DESCRIPTION = (
+    "Train a PPO explorer (stable-baselines3, MultiInputPolicy on the scan, local map and velocity) "
+    "on a mix of building types, save it with its config and training curve (.json beside the "
+    ".zip), then evaluate it against the random agent and the frontier explorer on the training "
+    'ids at their default size. Needs the rl extra: pip install "realistic-indoor[rl]".'
+)
+_EPILOG = """\
+presets (measured on 2 CPU cores):
+  smoke    256 steps on small buildings, then 1 episode of 50 steps per agent and id:
+           checks the set-up in 11 seconds (21-31 s on busy cores); the policy learns nothing
+  default  500,000 steps (about 20 minutes), then 2 episodes per agent and id at the ids'
+           step limits (140 CPU-seconds: 2 to 6 minutes)
+  long     3,000,000 steps on bigger buildings (hours), then 10 episodes per agent and id
+           (5 times the default's evaluation)
+
+output:
+  By default each run writes a new model under ./runs/ (ppo_ENVS_PRESET.zip, then
+  ppo_ENVS_PRESET_2.zip, ...), so no run replaces another. An existing file given with
+  --out is refused unless --overwrite. The evaluation goes to MODEL_eval/ beside the model.
+  All paths are checked before training starts.
+
+examples:
+  realistic-indoor train --preset smoke
+  realistic-indoor train --envs realistic
+  realistic-indoor train --envs random --out runs/ppo_random.zip --eval-envs RandomExplore-v0,OfficeExplore-v0
+  realistic-indoor train --no-train --out runs/ppo_realistic_default.zip --eval-episodes 10"""
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    """Add the ``train`` subcommand."""
+    p = sub.add_parser(
+        "train",
+        help="train a PPO explorer (presets smoke, default, long), then evaluate it",
+        description=_DESCRIPTION,
+        epilog=_EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_arguments(p)
+    p.set_defaults(func=run)
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The options of ``train`` (shared with ``experiments/train_ppo.py``)."""
+    from realistic_indoor.agents.rl.config import PPO_PRESETS
+
+    p.add_argument(
+        "--preset",
+        default="default",
+        choices=list(PPO_PRESETS),
+        help="training budget and evaluation (default: default; see below)",
+    )
+    p.add_argument(
+        "--envs",
+        default="realistic",
+        help="realistic (offices, schools, houses), random (the baseline maps), or comma-separated "
+        "registered ids to train on (default realistic)",
+    )
+    p.add_argument(
+        "--timesteps", type=int, help="training steps over all environments (default: the preset's)"
+    )
+    p.add_argument("--seed", type=int, default=0, help="seed of the policy and the environments (default 0)")
+    p.add_argument(
+        "--out",
+        help="model file to write (.zip; its .json goes beside it); default: a new runs/ppo_ENVS_PRESET.zip",
+    )
+    p.add_argument("--overwrite", action="store_true", help="replace the model at --out if it exists")
+    p.add_argument(
+        "--eval-episodes",
+        type=int,
+        help="episodes per agent and id after training; 0 skips the evaluation (default: the preset's)",
+    )
+    p.add_argument(
+        "--eval-max-steps",
+        type=int,
+        help="step limit of the evaluation episodes (default: the preset's; the ids' own for default, long)",
+    )
+    p.add_argument("--eval-envs", help="comma-separated ids to evaluate on (default: the training ids)")
+    p.add_argument("--eval-out", help="folder of the evaluation (default: MODEL_eval/ beside the model)")
+    p.add_argument("--workers", type=int, help="evaluation processes (default: one per CPU core)")
+    p.add_argument(
+        "--no-train",
+        action="store_true",
+        help="only evaluate the model already at --out (replacing its evaluation)",
+    )
+    p.add_argument("--quiet", action="store_true", help="no progress bars or progress lines")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Check every path and option, train (unless ``--no-train``), save, then evaluate."""
+    from realistic_indoor.agents.rl.config import env_ids_of
+
+    _check_numbers(args)
+    env_ids = env_ids_of(args.envs)
+    config = _config(args, env_ids)
+    plan = _eval_plan(args)
+    eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs else env_ids
+    model_path = _model_path(args, env_ids)
+    eval_dir = _eval_dir(args, model_path) if plan.episodes else None
+    if not args.no_train:
+        _train(args, config, model_path)
+    if eval_dir is None:
+        print("no evaluation (--eval-episodes 0)")
+        return 0
+    _evaluate(args, model_path, eval_ids, plan, eval_dir)
+    return 0
+
+
+def _check_numbers(args: argparse.Namespace) -> None:
+    """Refuse counts out of range, naming the option."""
+    for option, value, minimum in (
+        ("--timesteps", args.timesteps, 1),
+        ("--seed", args.seed, 0),
+        ("--eval-episodes", args.eval_episodes, 0),
+        ("--eval-max-steps", args.eval_max_steps, 1),
+        ("--workers", args.workers, 1),
+    ):
+        if value is not None and value < minimum:
+            raise ConfigError(f"{option} must be an integer >= {minimum}, not {value}")
+
+
+def _config(args: argparse.Namespace, env_ids: tuple[str, ...]):
+    from realistic_indoor.agents.rl.config import ppo_preset
+
+    changes = {"env_ids": env_ids, "seed": args.seed}
+    if args.timesteps is not None:
+        changes["total_timesteps"] = args.timesteps
+    return ppo_preset(args.preset, **changes)
+
+
+def _eval_plan(args: argparse.Namespace):
+    from realistic_indoor.agents.rl.config import PPO_EVAL_PRESETS
+
+    plan = PPO_EVAL_PRESETS[args.preset]
+    if args.eval_episodes is not None:
+        plan = plan.replace(episodes=args.eval_episodes)
+    if args.eval_max_steps is not None:
+        plan = plan.replace(max_steps=args.eval_max_steps)
+    return plan
+
+
+def envs_label(envs: str, env_ids: tuple[str, ...]) -> str:
+    """The ``ENVS`` part of default model names: the set's name, or the ids shortened.
+
+    >>> envs_label("OfficeExplore-v0,HouseExplore-v0", ("OfficeExplore-v0", "HouseExplore-v0"))
+    'officeexplore-houseexplore'
+    """
+    from realistic_indoor.agents.rl.config import ENV_SETS
+
+    if envs in ENV_SETS:
+        return envs
+    return "-".join(i.removesuffix("-v0").lower() for i in env_ids)
+
+
+def default_model_path(label: str, preset: str, folder: Path = RUNS_DIR, new: bool = True) -> Path:
+    """``folder/ppo_LABEL_PRESET.zip``, or with ``new`` the first of ``_2``, ``_3``, ... not taken.
+
+    Args:
+        label: The training environments' label (:func:`envs_label`).
+        preset: The preset's name.
+        folder: The runs folder.
+        new: Skip names whose model or evaluation folder exists.
+    """
+    stem = f"ppo_{label}_{preset}"
+    path, n = folder / f"{stem}.zip", 1
+    while new and (path.exists() or path.with_suffix(".json").exists() or _eval_dir_of(path).exists()):
+        n += 1
+        path = folder / f"{stem}_{n}.zip"
+    return path
+
+
+def _model_path(args: argparse.Namespace, env_ids: tuple[str, ...]) -> Path:
+    """The model to write (or with ``--no-train`` to read), checked."""
+    from realistic_indoor.files import check_output_path
+
+    label = envs_label(args.envs, env_ids)
+    if args.no_train:
+        path = Path(args.out) if args.out else default_model_path(label, args.preset, new=False)
+        if not path.is_file():
+            raise ConfigError(f"--no-train evaluates the model at --out, and {path} is not a file")
+        return path
+    if args.out is None:
+        path = default_model_path(label, args.preset)
+        return check_output_path(path, "--out", (".zip",))
+    path = check_output_path(args.out, "--out", (".zip",))
+    if not args.overwrite:
+        for taken in (path, path.with_suffix(".json")):
+            if taken.exists():
+                raise ConfigError(
+                    f"--out {path}: {taken} exists; add --overwrite to replace it, or choose a new name"
+                )
+    return path
+
+
+def _eval_dir_of(model_path: Path) -> Path:
+    return model_path.with_name(f"{model_path.stem}_eval")
+
+
+def _eval_dir(args: argparse.Namespace, model_path: Path) -> Path:
+    """The evaluation folder, checked."""
+    from realistic_indoor.files import check_output_dir
+
+    folder = Path(args.eval_out) if args.eval_out else _eval_dir_of(model_path)
+    return check_output_dir(folder, "--eval-out")
+
+
+def _train(args: argparse.Namespace, config, model_path: Path) -> None:
+    from realistic_indoor.agents.rl.train import require_rl, train_ppo
+
+    require_rl()
+    print(
+        f"training PPO ({args.preset} preset, seed {config.seed}) on {', '.join(config.env_ids)} "
+        f"for {config.total_timesteps:,} steps; model to {model_path}",
+        flush=True,
+    )
+    log = (lambda line: None) if args.quiet else (lambda line: print(line, flush=True))
+    result = train_ppo(config, model_path, log=log, progress=not args.quiet)
+    print(
+        f"saved {result.model_path} and {result.model_path.with_suffix('.json').name} after "
+        f"{result.seconds:.0f} s of training, {result.episodes} episodes "
+        f"(final coverage of the last 50: {result.last_coverage:.3f} on average)",
+        flush=True,
+    )
+
+
+def _evaluate(args: argparse.Namespace, model_path: Path, eval_ids, plan, eval_dir: Path) -> None:
+    from realistic_indoor.agents.rl.compare import evaluate_ppo, format_evaluation
+
+    agents = ", ".join(("ppo", *plan.baselines))
+    print(
+        f"evaluating {agents} on {plan.describe()} on {', '.join(eval_ids)} "
+        "(--eval-episodes to change, 0 to skip)",
+        flush=True,
+    )
+    results = evaluate_ppo(
+        model_path, eval_ids, plan, eval_dir, workers=args.workers, progress=not args.quiet
+    )
+    print(format_evaluation(results))
+    print(f"evaluation in {eval_dir}/")

@@ -61,7 +61,8 @@ def run_script(main_fn: Callable[[], int | None], name: str) -> int:
         The exit code: ``main_fn``'s (0 when it returns ``None``), 1 on a user error, 130 when
         interrupted, 0 when the reader of the output went away (``| head``).
     """
-    warnings.showwarning = _one_line_warning
+    shown = _Warnings()
+    warnings.showwarning = shown.show
     try:
         return int(main_fn() or 0)
     except RealisticIndoorError as e:
@@ -74,11 +75,45 @@ def run_script(main_fn: Callable[[], int | None], name: str) -> int:
         # The reader of our output went away (e.g. `| head`): not an error of ours.
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
         return 0
+    finally:
+        shown.summarise()
 
 
-def _one_line_warning(message, category, filename, lineno, file=None, line=None) -> None:
-    """Print a warning as one line naming its kind, without the source line."""
-    print(f"realistic-indoor: warning: {message}", file=file or sys.stderr)
+class _Warnings:
+    """Prints warnings as one line each, without the source line.
+
+    Plan repairs are printed for the first plan that needs any; those of further plans are
+    counted in one line at the end, so that a folder of messy plans does not bury the
+    command's own output.
+    """
+
+    def __init__(self) -> None:
+        self.repairs: list[str] = []
+
+    def show(self, message, category, filename, lineno, file=None, line=None) -> None:
+        from realistic_indoor.io.floorplan.repairs import PlanRepairWarning
+
+        if issubclass(category, PlanRepairWarning):
+            self.repairs.append(str(message))
+            if _plan_of(self.repairs[-1]) != _plan_of(self.repairs[0]):
+                return
+        print(f"realistic-indoor: warning: {message}", file=file or sys.stderr)
+
+    def summarise(self) -> None:
+        first = _plan_of(self.repairs[0]) if self.repairs else None
+        hidden = [m for m in self.repairs if _plan_of(m) != first]
+        if hidden:
+            plans = len({_plan_of(m) for m in hidden})
+            print(
+                f"realistic-indoor: warning: {len(hidden)} repairs in {plans} more plans not shown; "
+                "'realistic-indoor info PLAN' lists a plan's repairs, --strict refuses such plans",
+                file=sys.stderr,
+            )
+
+
+def _plan_of(repair_message: str) -> str:
+    """The file a plan-repair message names (its text before the first ``": "``)."""
+    return repair_message.split(": ", 1)[0]
 
 
 if __name__ == "__main__":

@@ -62,7 +62,13 @@ def run_script(main_fn: Callable[[], int | None], name: str) -> int:
         interrupted, 0 when the reader of the output went away (``| head``).
     """
     shown = _Warnings()
-    warnings.showwarning = shown.show
+    with warnings.catch_warnings():
+        warnings.simplefilter("always", UserWarning)  # every repair and lossy export, each time
+        warnings.showwarning = shown.show
+        return _run(main_fn, name, shown)
+
+
+def _run(main_fn: Callable[[], int | None], name: str, shown: _Warnings) -> int:
     try:
         return int(main_fn() or 0)
     except RealisticIndoorError as e:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from realistic_indoor.cli._like import add_like_options, run_like
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``generate`` subcommand."""
@@ -21,7 +23,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         epilog="examples:\n"
         "  realistic-indoor generate --type school --area 3000 --seed 7 -o school.json --png school.png\n"
         "  realistic-indoor generate --type office --count 200 --out-dir maps/\n"
-        "  realistic-indoor generate --type random --width 17 --height 13 -o random.wg.xml",
+        "  realistic-indoor generate --type random --width 17 --height 13 -o random.wg.xml\n"
+        "  realistic-indoor generate --type office --like real/offices/ --out-dir twins/   # same areas",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     p.add_argument("--type", default="office", choices=GENERATOR_NAMES, help="building type (default office)")
@@ -41,12 +44,19 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--model", help="JSON file of a fitted building-type model (see fit_model) to draw from")
     p.add_argument("--width", type=int, help="random maps: grid width in 3 m cells (with --height)")
     p.add_argument("--height", type=int, help="random maps: grid height in 3 m cells (with --width)")
+    add_like_options(p)
     p.set_defaults(func=run)
 
 
 def _generator(args: argparse.Namespace):
-    from realistic_indoor.errors import ConfigError
     from realistic_indoor.generator import make_generator
+
+    return make_generator(args.type, args.area, **_options(args))
+
+
+def _options(args: argparse.Namespace) -> dict:
+    """The generator's options from ``--width``/``--height`` and ``--model``."""
+    from realistic_indoor.errors import ConfigError
 
     options = {}
     if args.width is not None or args.height is not None:
@@ -58,7 +68,7 @@ def _generator(args: argparse.Namespace):
         if args.type == "random":
             raise ConfigError("--model drives the realistic generators, not --type random")
         options["model"] = _read_model(Path(args.model))
-    return make_generator(args.type, args.area, **options)
+    return options
 
 
 def _check_grid_size(width: int, height: int) -> None:
@@ -92,6 +102,8 @@ def run(args: argparse.Namespace) -> int:
     """Generate one building (or ``--count`` of them) and write them."""
     from realistic_indoor.errors import ConfigError
 
+    if args.like:
+        return run_like(args, _options(args))
     gen = _generator(args)
     if args.count is None:
         if args.out_dir:

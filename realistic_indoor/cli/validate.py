@@ -84,7 +84,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--two-sample-area",
         action="store_true",
-        help="let the two-sample tests use room areas (default: scale-free features only)",
+        help="let the two-sample tests use room areas and room density (default: scale-free features only)",
+    )
+    p.add_argument(
+        "--two-sample-features",
+        default="room,building,all",
+        metavar="GROUPS",
+        help="comma-separated feature groups of the two-sample tests, one test per group: room (Table 1 "
+        "and connectivity), building (building-level measures), all (both together); default all three",
     )
     p.add_argument(
         "--seed", type=int, default=0, help="seed of the two-sample tests' cross-validation (default 0)"
@@ -127,6 +134,19 @@ def _reference(args: argparse.Namespace):
     return load_plan_set(ref, strict=args.strict, progress=show_progress(args.quiet))
 
 
+def _feature_groups(text: str) -> tuple[str, ...]:
+    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.validator.two_sample import FEATURE_GROUPS
+
+    groups = tuple(dict.fromkeys(g.strip() for g in text.split(",") if g.strip()))
+    unknown = [g for g in groups if g not in FEATURE_GROUPS]
+    if unknown or not groups:
+        raise ConfigError(
+            f"--two-sample-features {text!r}: give one or more of {', '.join(FEATURE_GROUPS)}, comma-separated"
+        )
+    return groups
+
+
 def _check_arguments(args: argparse.Namespace) -> None:
     """Refuse a bad ``--type`` and unwritable ``-o`` and ``--plot`` paths before the sets are read."""
     from realistic_indoor.files import check_output_path
@@ -135,6 +155,7 @@ def _check_arguments(args: argparse.Namespace) -> None:
 
     if args.type is not None:
         judged_type(args.type)
+    _feature_groups(args.two_sample_features)
     if args.output:
         check_output_path(args.output, "-o")
     if args.plot:
@@ -181,6 +202,7 @@ def run(args: argparse.Namespace) -> int:
         seed=args.seed,
         two_sample=not args.no_two_sample,
         two_sample_area=args.two_sample_area,
+        two_sample_features=_feature_groups(args.two_sample_features),
         progress=progress,
     )
     text = render_comparison(comparison, args.format, worst=args.worst)

@@ -20,6 +20,8 @@ from realistic_indoor.building.labels import CIRCULATION_LABELS, ROOM_LABELS
 from realistic_indoor.validator.connectivity import core_rooms
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from shapely.geometry.base import BaseGeometry
 
     from realistic_indoor.building.building import Building
@@ -31,7 +33,9 @@ __all__ = [
     "SHAFT_MAX_M2",
     "BuildingMeasures",
     "building_measures",
+    "deviations",
     "footprint",
+    "measure_summary",
 ]
 
 CLOSING_M = 0.25
@@ -187,3 +191,44 @@ def _core_facade_share(building: Building, shape: BaseGeometry) -> float:
         building.room(rid).polygon.exterior.intersection(edge).length >= FACADE_MIN_M for rid in core
     )
     return on_facade / len(core)
+
+
+def measure_summary(measures: Sequence[BuildingMeasures]) -> dict[str, dict[str, float]]:
+    """Median, quartiles and count of every measure over a set of plans (``nan`` values left out).
+
+    Returns:
+        ``{measure: {"median", "q1", "q3", "n"}}`` in the order of :data:`BUILDING_MEASURES`;
+        ``nan`` statistics for a measure no plan has.
+    """
+    table = np.array([list(m.as_dict().values()) for m in measures], dtype=float).reshape(len(measures), -1)
+    out = {}
+    for j, name in enumerate(BUILDING_MEASURES):
+        values = table[:, j][~np.isnan(table[:, j])] if len(measures) else np.array([])
+        q1, median, q3 = np.percentile(values, [25, 50, 75]) if len(values) else (math.nan,) * 3
+        out[name] = {"median": float(median), "q1": float(q1), "q3": float(q3), "n": len(values)}
+    return out
+
+
+def deviations(
+    summary: dict[str, dict[str, float]], reference: dict[str, dict[str, float]]
+) -> list[tuple[str, float, str]]:
+    """How far each measure's median lies from a reference's, in the reference's interquartile ranges.
+
+    Returns:
+        ``(measure, distance, sentence)`` sorted from the largest distance: 0 inside the
+        reference's interquartile range, else the distance to its nearer quartile over the range
+        (at least 1% of the reference's median, so a range of zero width does not divide by 0).
+    """
+    out = []
+    for name, ref in reference.items():
+        median = summary[name]["median"]
+        if math.isnan(median) or math.isnan(ref["median"]):
+            continue
+        width = max(ref["q3"] - ref["q1"], 0.01 * abs(ref["median"]), 1e-9)
+        gap = max(ref["q1"] - median, median - ref["q3"], 0.0)
+        sentence = (
+            f"{BUILDING_MEASURES[name]}: median {median:.3g} against {ref['median']:.3g} "
+            f"(interquartile range {ref['q1']:.3g}-{ref['q3']:.3g})"
+        )
+        out.append((name, gap / width, sentence))
+    return sorted(out, key=lambda row: -row[1])

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import BuildingType, SemanticLabel, parse_building_type
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
+from realistic_indoor.validator.building_measures import BuildingMeasures, building_measures, measure_summary
 from realistic_indoor.validator.connectivity import set_connectivity
 from realistic_indoor.validator.label_inference import infer_labels, lacks_labels
 from realistic_indoor.validator.plan_sets import PlanSet, SkippedPlanWarning, plan_problem
@@ -56,6 +57,7 @@ class SetReport:
         inferred: Sources of the plans whose semantic labels were inferred.
         skipped: ``(source, reason)`` of plans left out: those of its files that could not be
             read, then those that cannot be measured.
+        measures: The building-level measures of each plan, in the order of ``plans``.
     """
 
     plans: PlanSet
@@ -65,6 +67,12 @@ class SetReport:
     scale_flags: tuple[ScaleFlag, ...]
     inferred: tuple[str, ...]
     skipped: tuple[tuple[str, str], ...]
+    measures: tuple[BuildingMeasures, ...] = ()
+
+    @property
+    def measure_summary(self) -> dict[str, dict[str, float]]:
+        """Median and quartiles of each building-level measure over the set's plans."""
+        return measure_summary(self.measures)
 
     @property
     def name(self) -> str:
@@ -91,6 +99,8 @@ class Comparison:
         reference_set: The reference's plans, when it was fitted from plans.
         reference_skipped: ``(source, reason)`` of the reference's plans left out (also in
             ``notes``).
+        reference_measures: The building-level measures of the reference's plans, when it was
+            fitted from plans (the paper gives none).
     """
 
     building_type: BuildingType
@@ -100,6 +110,7 @@ class Comparison:
     notes: tuple[str, ...] = ()
     reference_set: PlanSet | None = None
     reference_skipped: tuple[tuple[str, str], ...] = ()
+    reference_measures: tuple[BuildingMeasures, ...] = ()
 
 
 def judged_type(value: BuildingType | str) -> BuildingType:
@@ -207,7 +218,8 @@ def _report(
         if (f := scale_check(b, _own_type(b, btype), source=src)) is not None
     )
     score = score_statistics(table, conn, reference, cfg)
-    return SetReport(prepared, table, conn, score, flags, inferred, skipped)
+    measures = tuple(building_measures(b) for b in prepared.buildings)
+    return SetReport(prepared, table, conn, score, flags, inferred, skipped, measures)
 
 
 def _reference(
@@ -223,7 +235,11 @@ def _reference(
 
 
 def _two_sample_tests(
-    named: Sequence[PlanSet], seed: int, with_area: bool, tick: Callable[[str], object]
+    named: Sequence[PlanSet],
+    seed: int,
+    with_area: bool,
+    groups: Sequence[str],
+    tick: Callable[[str], object],
 ) -> tuple[list[TwoSampleResult], list[str]]:
     from realistic_indoor.validator.two_sample import two_sample_test
 
@@ -233,9 +249,12 @@ def _two_sample_tests(
             notes.append(f"no two-sample test of {a.name} vs {b.name}: it needs at least 2 plans in each set")
             continue
         tick(f"two-sample test {a.name} vs {b.name}")
-        results.append(
-            two_sample_test(a.buildings, b.buildings, names=(a.name, b.name), seed=seed, with_area=with_area)
-        )
+        results += [
+            two_sample_test(
+                a.buildings, b.buildings, names=(a.name, b.name), seed=seed, with_area=with_area, features=g
+            )
+            for g in groups
+        ]
     return results, notes
 
 
@@ -265,6 +284,7 @@ def compare_sets(
     seed: int = 0,
     two_sample: bool = True,
     two_sample_area: bool = False,
+    two_sample_features: Sequence[str] = ("room", "building", "all"),
     score_config: ScoreConfig | None = None,
     progress: bool = False,
 ) -> Comparison:
@@ -282,6 +302,8 @@ def compare_sets(
         two_sample: Run the two-sample tests (they need scikit-learn and take about a second).
         two_sample_area: Let the two-sample tests use room areas too (default: scale-free
             features only).
+        two_sample_features: The feature groups of the two-sample tests, one test per group
+            and pair of sets (see :data:`~realistic_indoor.validator.two_sample.FEATURE_GROUPS`).
         score_config: Constants of the realism score (default :class:`ScoreConfig`).
         progress: Show on stderr which set or test is being measured (a tqdm bar).
 
@@ -317,7 +339,7 @@ def compare_sets(
         tests: list[TwoSampleResult] = []
         if two_sample:
             named = [r.plans for r in reports] + ([ref_set] if ref_set is not None else [])
-            tests, test_notes = _two_sample_tests(named, seed, two_sample_area, tick)
+            tests, test_notes = _two_sample_tests(named, seed, two_sample_area, two_sample_features, tick)
             notes += test_notes
             if len(named) < 2:
                 notes.append(
@@ -325,4 +347,7 @@ def compare_sets(
                 )
     finally:
         close()
-    return Comparison(btype, ref, tuple(reports), tuple(tests), tuple(notes), ref_set, ref_skipped)
+    ref_measures = tuple(building_measures(b) for b in ref_set.buildings) if ref_set is not None else ()
+    return Comparison(
+        btype, ref, tuple(reports), tuple(tests), tuple(notes), ref_set, ref_skipped, ref_measures
+    )

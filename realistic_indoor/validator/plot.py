@@ -198,6 +198,59 @@ def _score_panel(ax: Axes, c: Comparison, groups: list[_Group]) -> None:
         )
 
 
+_SHAPE_MEASURES = {
+    "footprint_fill": "fill",
+    "isoperimetric_quotient": "4πA/P²",
+    "circulation_share": "circulation",
+    "door_depth_norm": "depth/√rooms",
+    "one_door_share": "one door",
+    "core_facade_share": "core facade",
+}
+"""Building-level measures drawn in the shape panel (all between 0 and about 1), short names."""
+
+
+def _measure_sets(c: Comparison, groups: list[_Group]) -> list[tuple[_Group, list]]:
+    """Each group with its plans' building-level measures (the reference's when fitted from plans)."""
+    pairs = [(g, list(s.measures)) for g, s in zip(groups, c.sets, strict=False)]
+    if c.reference_measures:
+        pairs.append((groups[-1], list(c.reference_measures)))
+    return pairs
+
+
+def _measure_boxes(ax: Axes, pairs: list[tuple[_Group, list]], keys: list[str]) -> None:
+    offsets = _offsets(len(pairs))
+    width = 0.8 / max(len(pairs), 1)
+    for off, (g, measures) in zip(offsets, pairs, strict=True):
+        data = [[v for m in measures if not math.isnan(v := float(getattr(m, k)))] for k in keys]
+        pos = [i + off for i, d in enumerate(data) if d]
+        if pos:
+            ax.boxplot(
+                [d for d in data if d],
+                positions=pos,
+                widths=width * 0.85,
+                patch_artist=True,
+                showfliers=False,
+                boxprops={"facecolor": g.colour, "alpha": 0.6, "edgecolor": g.colour},
+                medianprops={"color": "black"},
+                whiskerprops={"color": g.colour},
+                capprops={"color": g.colour},
+            )
+    ax.grid(axis="y", alpha=0.3)
+
+
+def _building_panels(shape_ax: Axes, density_ax: Axes, c: Comparison, groups: list[_Group]) -> None:
+    """Building-level measures per set: footprint and circulation shares, and room density."""
+    pairs = _measure_sets(c, groups)
+    _measure_boxes(shape_ax, pairs, list(_SHAPE_MEASURES))
+    shape_ax.set_xticks(range(len(_SHAPE_MEASURES)), list(_SHAPE_MEASURES.values()), fontsize=8, rotation=20)
+    shape_ax.set_title("Building: footprint, circulation, depth", fontsize=11, loc="left")
+    shape_ax.set_ylabel("share / ratio")
+    _measure_boxes(density_ax, pairs, ["rooms_per_hectare"])
+    density_ax.set_xticks([0], ["rooms per hectare of floor"])
+    density_ax.set_title("Building: room density", fontsize=11, loc="left")
+    density_ax.set_ylabel("rooms / 10,000 m²")
+
+
 def _legend_handles(c: Comparison, groups: list[_Group]) -> list:
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -223,8 +276,8 @@ def comparison_figure(c: Comparison) -> Figure:
     from matplotlib.figure import Figure
 
     groups = _groups(c)
-    fig = Figure(figsize=(17, 10), layout="constrained")
-    axes = fig.subplots(2, 3)
+    fig = Figure(figsize=(22, 10), layout="constrained")
+    axes = fig.subplots(2, 4)
     _shares_panel(axes[0, 0], c, groups)
     _box_panel(axes[0, 1], c, groups, "area", "Room area per label", "m² (log scale)")
     axes[0, 1].set_yscale("log")
@@ -232,6 +285,7 @@ def comparison_figure(c: Comparison) -> Figure:
     _connectivity_panel(axes[1, 0], c, groups)
     _box_panel(axes[1, 1], c, groups, "doors", "Doorways per label", "doorways per room")
     _score_panel(axes[1, 2], c, groups)
+    _building_panels(axes[0, 3], axes[1, 3], c, groups)
     fig.legend(
         handles=_legend_handles(c, groups), loc="outside lower center", ncols=6, fontsize=10, frameon=False
     )

@@ -7,6 +7,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.validator.building_measures import BUILDING_MEASURES, deviations, measure_summary
 from realistic_indoor.validator.connectivity import CONNECTIVITY_METRICS
 from realistic_indoor.validator.grid import json_safe, render_grid
 from realistic_indoor.validator.tables import TABLE_FORMATS, label_table_records, label_table_rows
@@ -57,11 +58,50 @@ def _score_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
     return header, rows
 
 
+def _measure_columns(c: Comparison) -> dict[str, dict[str, dict[str, float]]]:
+    """Summaries of the building-level measures per set, and of the reference's plans if any."""
+    columns = {s.name: s.measure_summary for s in c.sets}
+    if c.reference_measures:
+        columns[c.reference.column] = measure_summary(c.reference_measures)
+    return columns
+
+
+def _measure_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
+    columns = _measure_columns(c)
+    header = ["measure (median [interquartile range])", *columns]
+    rows = [
+        [text, *(_median_iqr(summary[name]) for summary in columns.values())]
+        for name, text in BUILDING_MEASURES.items()
+    ]
+    return header, rows
+
+
+def _median_iqr(stat: dict[str, float]) -> str:
+    if math.isnan(stat["median"]):
+        return "-"
+    return f"{stat['median']:.3g} [{stat['q1']:.3g}-{stat['q3']:.3g}]"
+
+
+def _building_worst(c: Comparison, s: SetReport, worst: int) -> list[str]:
+    """The measures whose median lies farthest outside the reference plans' interquartile range."""
+    if not c.reference_measures:
+        return []
+    rows = deviations(s.measure_summary, measure_summary(c.reference_measures))
+    return [sentence for _name, distance, sentence in rows[:worst] if distance > 0]
+
+
 def _two_sample_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
-    header = ["sets", "plans", "balanced accuracy", "most telling features (+: higher in the second set)"]
+    header = [
+        "sets",
+        "features",
+        "plans",
+        "balanced accuracy",
+        "most telling features (+: higher in the second set)",
+    ]
     rows = [
         [
             f"{t.name_a} vs {t.name_b}",
+            t.features,
             f"{t.n_a} + {t.n_b}",
             f"{t.accuracy:.2f} ± {t.accuracy_std:.2f}",
             ", ".join(f"{name} ({coef:+.1f})" for name, coef in t.telling_features) or "none",
@@ -110,6 +150,7 @@ def _text(c: Comparison, fmt: str, worst: int) -> str:
     tables = {s.name: s.table for s in c.sets} | {c.reference.column: c.reference.table}
     parts.append(render_grid(*label_table_rows(tables), fmt, "Table 1: rooms per semantic label"))
     parts.append(render_grid(*_connectivity_rows(c), fmt, "Connectivity"))
+    parts.append(render_grid(*_measure_rows(c), fmt, "Building-level measures (docs/validator.md)"))
     parts.append(render_grid(*_score_rows(c), fmt, f"Realism score ({SCORE_SCALE})"))
     if c.two_sample:
         parts.append(render_grid(*_two_sample_rows(c), fmt, f"Two-sample tests ({TWO_SAMPLE_SCALE})"))
@@ -117,6 +158,7 @@ def _text(c: Comparison, fmt: str, worst: int) -> str:
     for s in c.sets:
         worst_lines.append(f"- **{s.name}**" if md else f"  {s.name}:")
         worst_lines += [("  - " if md else "    - ") + w for w in s.score.worst(worst)]
+        worst_lines += [("  - " if md else "    - ") + w for w in _building_worst(c, s, worst)]
     parts.append(_titled("Worst deviations", worst_lines, md))
     for title, items in _lists(c):
         parts.append(_titled(title, [("- " if md else "  ") + i for i in items], md))
@@ -135,6 +177,7 @@ def comparison_to_dict(c: Comparison) -> dict[str, Any]:
             "table": ref.table,
             "connectivity": ref.connectivity,
             "connectivity_std": ref.connectivity_std,
+            "building_measures": measure_summary(c.reference_measures) if c.reference_measures else None,
         },
         "sets": [
             {
@@ -147,6 +190,11 @@ def comparison_to_dict(c: Comparison) -> dict[str, Any]:
                 "table": s.table,
                 "connectivity": s.connectivity.to_dict(),
                 "score": {**s.score.to_dict(), "worst": s.score.worst(5)},
+                "building_measures": s.measure_summary,
+                "plan_measures": [
+                    {"source": src, **m.as_dict()} for src, m in zip(s.plans.sources, s.measures, strict=True)
+                ],
+                "building_worst": _building_worst(c, s, 5),
                 "scale_flags": [{**vars(f), "message": f.message} for f in s.scale_flags],
             }
             for s in c.sets
@@ -171,11 +219,17 @@ def _csv(c: Comparison) -> str:
     rows += [
         ["connectivity", c.reference.column, k, "value", repr(v)] for k, v in c.reference.connectivity.items()
     ]
+    for name, summary in _measure_columns(c).items():
+        rows += [
+            ["building", name, measure, stat, repr(float(value))]
+            for measure, stats in summary.items()
+            for stat, value in stats.items()
+        ]
     for t in c.two_sample:
         pair = f"{t.name_a} vs {t.name_b}"
         rows += [
-            ["two_sample", pair, "", "balanced_accuracy", repr(t.accuracy)],
-            ["two_sample", pair, "", "balanced_accuracy_std", repr(t.accuracy_std)],
+            ["two_sample", pair, t.features, "balanced_accuracy", repr(t.accuracy)],
+            ["two_sample", pair, t.features, "balanced_accuracy_std", repr(t.accuracy_std)],
         ]
     rows = [[cell if cell != "nan" else "" for cell in r] for r in rows]
     return render_grid(["section", "set", "subject", "statistic", "value"], rows, "csv") + "\n"

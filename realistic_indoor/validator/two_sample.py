@@ -28,11 +28,16 @@ if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
 __all__ = [
+    "BUILDING_FEATURE_NAMES",
+    "BUILDING_SCALE_FREE",
+    "FEATURE_GROUPS",
     "FEATURE_NAMES",
     "SCALE_FREE",
     "TwoSampleResult",
     "building_features",
+    "building_level_features",
     "feature_matrix",
+    "group_matrix",
     "two_sample_test",
 ]
 
@@ -51,6 +56,28 @@ floor area, path lengths) are left out: they say how big a building is, not how 
 SCALE_FREE = np.array(["log area" not in name for name in FEATURE_NAMES])
 """Mask of the features that do not depend on the plan's scale (all but the areas): real plans'
 scales are often unreliable, so the two-sample test leaves areas out unless asked."""
+
+BUILDING_FEATURE_NAMES: tuple[str, ...] = (
+    "footprint fill",
+    "isoperimetric quotient",
+    "log aspect ratio",
+    "circulation share",
+    "log rooms per hectare",
+    "door depth / sqrt(rooms)",
+    "one-door share",
+    "corridor loops",
+    "core rooms with a facade",
+)
+"""Names of the building-level features (from
+:func:`~realistic_indoor.validator.building_measures.building_measures`), in vector order."""
+
+BUILDING_SCALE_FREE = np.array(["hectare" not in name for name in BUILDING_FEATURE_NAMES])
+"""Mask of the building-level features that do not depend on the plan's scale (all but the room
+density)."""
+
+FEATURE_GROUPS = ("room", "building", "all")
+"""Feature groups a two-sample test can use: the room statistics of Table 1 and connectivity
+(:data:`FEATURE_NAMES`), the building-level measures (:data:`BUILDING_FEATURE_NAMES`), or all."""
 
 
 def building_features(b: Building) -> np.ndarray:
@@ -71,6 +98,54 @@ def building_features(b: Building) -> np.ndarray:
     conn = connectivity(b).metrics()
     values += [conn[m.key] / 100 for m in _SHARE_METRICS]
     return np.nan_to_num(np.asarray(values, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
+
+
+def building_level_features(b: Building) -> np.ndarray:
+    """The building-level feature vector (see :data:`BUILDING_FEATURE_NAMES`); ``nan`` becomes 0."""
+    from realistic_indoor.validator.building_measures import building_measures
+
+    m = building_measures(b)
+    values = (
+        m.footprint_fill,
+        m.isoperimetric_quotient,
+        math.log(m.aspect_ratio),
+        m.circulation_share,
+        math.log(m.rooms_per_hectare),
+        m.door_depth_norm,
+        m.one_door_share,
+        m.circulation_loops,
+        m.core_facade_share,
+    )
+    return np.nan_to_num(np.asarray(values, dtype=float), nan=0.0, posinf=0.0, neginf=0.0)
+
+
+def group_matrix(
+    buildings: Sequence[Building], features: str, with_area: bool
+) -> tuple[np.ndarray, list[str]]:
+    """Feature vectors of a feature group as rows, and the names of their columns.
+
+    Args:
+        buildings: The buildings.
+        features: ``"room"``, ``"building"`` or ``"all"`` (see :data:`FEATURE_GROUPS`).
+        with_area: Keep the features that depend on the plan's scale.
+
+    Raises:
+        ConfigError: For an unknown group.
+    """
+    if features not in FEATURE_GROUPS:
+        raise ConfigError(f"unknown feature group {features!r}; groups: {', '.join(FEATURE_GROUPS)}")
+    blocks, names = [], []
+    if features in ("room", "all"):
+        keep = np.ones(len(FEATURE_NAMES), dtype=bool) if with_area else SCALE_FREE
+        blocks.append(feature_matrix(buildings)[:, keep])
+        names += [n for n, k in zip(FEATURE_NAMES, keep, strict=True) if k]
+    if features in ("building", "all"):
+        keep = np.ones(len(BUILDING_FEATURE_NAMES), dtype=bool) if with_area else BUILDING_SCALE_FREE
+        rows = [building_level_features(b) for b in buildings]
+        matrix = np.stack(rows) if rows else np.zeros((0, len(BUILDING_FEATURE_NAMES)))
+        blocks.append(matrix[:, keep])
+        names += [n for n, k in zip(BUILDING_FEATURE_NAMES, keep, strict=True) if k]
+    return np.hstack(blocks), names
 
 
 def feature_matrix(buildings: Sequence[Building]) -> np.ndarray:
@@ -97,6 +172,7 @@ class TwoSampleResult:
         telling_features: The features that separate the sets most (largest standardised
             coefficients of the model fitted on all buildings), with the sign: positive means
             higher in set B.
+        features: The feature group used (see :data:`FEATURE_GROUPS`).
     """
 
     name_a: str
@@ -107,6 +183,7 @@ class TwoSampleResult:
     accuracy_std: float
     folds: int
     telling_features: tuple[tuple[str, float], ...]
+    features: str = "room"
 
     def to_dict(self) -> dict:
         """Plain data."""
@@ -117,7 +194,7 @@ class TwoSampleResult:
         top = ", ".join(name for name, _c in self.telling_features) or "none"
         return (
             f"{self.name_a} vs {self.name_b}: balanced accuracy {self.accuracy:.2f} +/- {self.accuracy_std:.2f} "
-            f"({self.folds} folds; 0.5 = indistinguishable); most telling: {top}"
+            f"on {self.features} features ({self.folds} folds; 0.5 = indistinguishable); most telling: {top}"
         )
 
 
@@ -131,6 +208,7 @@ def two_sample_test(
     n_repeats: int = 5,
     top: int = 3,
     with_area: bool = False,
+    features: str = "room",
 ) -> TwoSampleResult:
     """Cross-validated accuracy of a logistic regression telling ``a`` from ``b``.
 
@@ -142,8 +220,10 @@ def two_sample_test(
         n_splits: Folds per repeat (reduced to the size of the smaller set).
         n_repeats: Repeats of the cross-validation with different shuffles.
         top: How many telling features to report.
-        with_area: Also use the rooms' areas (by default only the scale-free features, see
-            :data:`SCALE_FREE`).
+        with_area: Also use the rooms' areas and the room density (by default only the
+            scale-free features, see :data:`SCALE_FREE` and :data:`BUILDING_SCALE_FREE`).
+        features: The feature group: ``"room"`` (Table 1 and connectivity), ``"building"``
+            (building-level measures) or ``"all"``.
 
     Raises:
         ConfigError: If a set has fewer than two buildings.
@@ -158,9 +238,8 @@ def two_sample_test(
     from sklearn.pipeline import make_pipeline
     from sklearn.preprocessing import StandardScaler
 
-    columns = np.ones(len(FEATURE_NAMES), dtype=bool) if with_area else SCALE_FREE
-    names_used = [n for n, keep in zip(FEATURE_NAMES, columns, strict=True) if keep]
-    x = np.vstack([feature_matrix(a), feature_matrix(b)])[:, columns]
+    x_a, names_used = group_matrix(a, features, with_area)
+    x = np.vstack([x_a, group_matrix(b, features, with_area)[0]])
     y = np.r_[np.zeros(len(a), dtype=int), np.ones(len(b), dtype=int)]
     model = make_pipeline(StandardScaler(), LogisticRegression(max_iter=2000, class_weight="balanced"))
     cv = RepeatedStratifiedKFold(
@@ -171,5 +250,13 @@ def two_sample_test(
     order = np.argsort(-np.abs(coefs), kind="stable")[:top]
     telling = tuple((names_used[i], float(coefs[i])) for i in order if abs(coefs[i]) > 1e-9)
     return TwoSampleResult(
-        names[0], names[1], len(a), len(b), float(scores.mean()), float(scores.std()), len(scores), telling
+        names[0],
+        names[1],
+        len(a),
+        len(b),
+        float(scores.mean()),
+        float(scores.std()),
+        len(scores),
+        telling,
+        features,
     )

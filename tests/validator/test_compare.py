@@ -31,9 +31,10 @@ def test_compare_sets__scores_tables_and_tests_for_each_set(mazes, tidy):
     assert c.sets[0].connectivity.core_touching_corridor_pct == pytest.approx(60.0)
     assert c.sets[1].connectivity.core_touching_corridor_pct == pytest.approx(100.0)
     assert c.sets[0].rooms == 32
-    (test,) = c.two_sample
-    assert (test.name_a, test.name_b) == ("mazes", "tidy")
-    assert test.accuracy == pytest.approx(1.0)
+    pairs = [(t.name_a, t.name_b, t.features) for t in c.two_sample]
+    assert pairs == [("mazes", "tidy", "room"), ("mazes", "tidy", "building"), ("mazes", "tidy", "all")]
+    assert c.two_sample[0].accuracy == pytest.approx(1.0)
+    assert len(c.sets[0].measures) == len(mazes.buildings)
 
 
 def test_compare_sets__same_as_score_of_the_set_alone(mazes):
@@ -49,7 +50,8 @@ def test_compare_sets__reference_fitted_from_plans_joins_the_two_sample_tests(ma
     c = compare_sets([mazes], "office", reference=tidy)
     assert c.reference.name == "tidy"
     assert c.reference_set is not None
-    assert [(t.name_a, t.name_b) for t in c.two_sample] == [("mazes", "tidy")]
+    assert [(t.name_a, t.name_b) for t in c.two_sample] == [("mazes", "tidy")] * 3
+    assert len(c.reference_measures) == len(tidy.buildings)
     assert c.reference.connectivity["core_touching_corridor_pct"] == pytest.approx(100.0)
 
 

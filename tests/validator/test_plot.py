@@ -5,7 +5,7 @@ from realistic_indoor.validator.plot import comparison_figure, plot_comparison
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
-def test_comparison_figure__six_panels_with_the_reference(maze_office, tiny_office):
+def test_comparison_figure__eight_panels_with_the_reference(maze_office, tiny_office):
     c = compare_sets(
         [PlanSet.of("mazes", [maze_office] * 2), PlanSet.of("tidy", [tiny_office] * 2)], "office"
     )
@@ -15,9 +15,11 @@ def test_comparison_figure__six_panels_with_the_reference(maze_office, tiny_offi
         "Share of rooms per label",
         "Room area per label",
         "Axes ratio per label",
+        "Building: footprint, circulation, depth",
         "Connectivity",
         "Doorways per label",
         "Realism score vs paper: office",
+        "Building: room density",
     ]
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
     assert legend == ["mazes (2)", "tidy (2)", "paper: office: shares", "paper: office: mean ± std"]

@@ -68,7 +68,7 @@ def test_render_comparison__markdown_json_csv_agree(comparison):
         r for r in rows if r["section"] == "score" and r["set"] == "tidy" and r["statistic"] == "overall"
     )
     assert float(overall["value"]) == pytest.approx(comparison.sets[1].score.overall)
-    assert {r["section"] for r in rows} == {"table", "connectivity", "score", "two_sample"}
+    assert {r["section"] for r in rows} == {"table", "connectivity", "building", "score", "two_sample"}
 
 
 def test_render_comparison__unknown_format(comparison):

@@ -86,25 +86,30 @@ def _reference_marks(ax: Axes, c: Comparison, key: str, offset: float) -> None:
     ax.errorbar(xs, means, yerr=stds, **_REF_STYLE)
 
 
+def _boxes(ax: Axes, data: list[list[float]], offset: float, width: float, colour: Any) -> None:
+    """One box per non-empty list of ``data``, the ``i``-th at ``i + offset``, in one set's colour."""
+    pos = [i + offset for i, d in enumerate(data) if d]
+    if pos:
+        ax.boxplot(
+            [d for d in data if d],
+            positions=pos,
+            widths=width * 0.85,
+            patch_artist=True,
+            showfliers=False,
+            boxprops={"facecolor": colour, "alpha": 0.6, "edgecolor": colour},
+            medianprops={"color": "black"},
+            whiskerprops={"color": colour},
+            capprops={"color": colour},
+        )
+
+
 def _box_panel(ax: Axes, c: Comparison, groups: list[_Group], key: str, title: str, ylabel: str) -> None:
     paper = not c.reference.buildings
     offsets = _offsets(len(groups) + paper)
     width = 0.8 / (len(groups) + paper)
     for off, g in zip(offsets, groups, strict=False):
         data = [[float(getattr(f, key)) for f in g.features if f.label is lab] for lab in _LABELS]
-        pos = [i + off for i, d in enumerate(data) if d]
-        if pos:
-            ax.boxplot(
-                [d for d in data if d],
-                positions=pos,
-                widths=width * 0.85,
-                patch_artist=True,
-                showfliers=False,
-                boxprops={"facecolor": g.colour, "alpha": 0.6, "edgecolor": g.colour},
-                medianprops={"color": "black"},
-                whiskerprops={"color": g.colour},
-                capprops={"color": g.colour},
-            )
+        _boxes(ax, data, off, width, g.colour)
     if paper:
         _reference_marks(ax, c, key, offsets[-1])
     _label_axis(ax, title, ylabel)
@@ -222,19 +227,7 @@ def _measure_boxes(ax: Axes, pairs: list[tuple[_Group, list]], keys: list[str]) 
     width = 0.8 / max(len(pairs), 1)
     for off, (g, measures) in zip(offsets, pairs, strict=True):
         data = [[v for m in measures if not math.isnan(v := float(getattr(m, k)))] for k in keys]
-        pos = [i + off for i, d in enumerate(data) if d]
-        if pos:
-            ax.boxplot(
-                [d for d in data if d],
-                positions=pos,
-                widths=width * 0.85,
-                patch_artist=True,
-                showfliers=False,
-                boxprops={"facecolor": g.colour, "alpha": 0.6, "edgecolor": g.colour},
-                medianprops={"color": "black"},
-                whiskerprops={"color": g.colour},
-                capprops={"color": g.colour},
-            )
+        _boxes(ax, data, off, width, g.colour)
     ax.grid(axis="y", alpha=0.3)
 
 

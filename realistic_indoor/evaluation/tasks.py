@@ -204,7 +204,8 @@ def make_env(spec: EnvSpec) -> Any:
     if "max_steps" in kwargs:
         kwargs.setdefault("max_episode_steps", kwargs["max_steps"])
     if spec.plan is not None:
-        kwargs["building"] = _load_plan(spec.plan)
+        # the cache entry readable_envs filled: the plan is read (and its repairs shown) once
+        kwargs["building"] = _load_plan(spec.plan, False)
     return gym.make(spec.env_id, **kwargs)
 
 

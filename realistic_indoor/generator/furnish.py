@@ -1,0 +1,199 @@
+"""Rooms, doors and functions for painted regions: the part the wing and block layouts share.
+
+A layout paints its footprint into :class:`~realistic_indoor.generator.wings.paint.Regions`
+(corridor pieces, halls, strips of rooms, end rooms, courtyards);
+:func:`rooms_from_regions` cuts the strips into rooms and the corridors into segments, and
+:func:`connect_and_name` adds the doors (circulation, entrances, rooms, reachability, no
+mazes) and the functions.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from realistic_indoor.generator.connect import (
+    break_mazes,
+    connect_circulation,
+    connect_rooms,
+    ensure_reachable,
+)
+from realistic_indoor.generator.doors import RULES, add_exterior_door, exterior_walls
+from realistic_indoor.generator.functions import FunctionRoles, assign_functions
+from realistic_indoor.generator.geometry import Rect, to_units
+from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
+from realistic_indoor.generator.wings.bays import DOOR_NEED, BayContext, subdivide
+from realistic_indoor.generator.wings.budget import building_budget
+from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
+from realistic_indoor.generator.wings.halls import carve_hall_bays
+from realistic_indoor.generator.wings.sizing import Dims
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from realistic_indoor.generator.wings.paint import Regions
+    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.models.building_model import BuildingTypeModel
+
+__all__ = ["connect_and_name", "layout_dims", "rooms_from_regions"]
+
+
+def rooms_from_regions(
+    regions: Regions, rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle, dims: Dims
+) -> Plan:
+    """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions."""
+    carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
+    plan = Plan(exterior_holes=regions.holes)
+    for _, rects in regions.halls:
+        plan.add(PlanRoom(rects, H, role="hall"))
+    circulation = regions.corridors + [r for _, rects in regions.halls for r in rects]
+    stub = to_units(rng.uniform(1.3, 1.6))
+    limit = (dims.depth + dims.shallow) // 2
+    budget = building_budget(regions, model, stub, style.core_rooms, limit)
+    ctx = BayContext(model, budget, circulation, stub, style.core_rooms, limit)
+    for k in rng.permutation(len(regions.bays)):
+        subdivide(plan, regions.bays[int(k)], rng, ctx)
+    for rect in regions.ends:
+        plan.add(PlanRoom([rect], S, role="end"))
+    _corridors(plan, regions, model, rng, dims, style)
+    return plan
+
+
+def connect_and_name(
+    plan: Plan, rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle
+) -> None:
+    """Doors (circulation, entrances, rooms, reachability, no mazes), then functions."""
+    connect_circulation(plan)
+    _entrances(plan, rng, _lobby(plan), style, model)
+    connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
+    ensure_reachable(plan, rng)
+    break_mazes(plan, rng)
+    roles = FunctionRoles(
+        service=style.service_functions,
+        storage=style.storage_functions,
+        ends=style.end_functions,
+        entrance=style.entrance_functions,
+    )
+    assign_functions(plan, model, rng, roles)
+    _require(plan, style.required_functions)
+
+
+def _require(plan: Plan, functions: tuple[str, ...]) -> None:
+    """Make sure each required function is present, giving it to the largest fitting room.
+
+    A missing gym takes the largest hall that is not the lobby, a missing lab the largest big
+    (else medium) room that opens onto a corridor.
+    """
+    present = {r.function for r in plan.rooms}
+    partners = plan.door_partners()
+    for function in functions:
+        if function in present:
+            continue
+        if function == "gym":
+            pool = [i for i, r in enumerate(plan.rooms) if r.label is H and r.role != "lobby"]
+        else:
+            pool = [
+                i
+                for i, r in enumerate(plan.rooms)
+                if r.label in (B, M)
+                and r.role == "room"
+                and any(j is not None and plan.rooms[j].label is C for j in partners[i])
+            ]
+            pool = [i for i in pool if plan.rooms[i].label is B] or pool
+        if pool:
+            plan.rooms[max(pool, key=lambda i: plan.rooms[i].area)].function = function
+
+
+def _lobby(plan: Plan) -> int:
+    """Make the hall with a facade nearest the middle of the building the lobby (-1: none)."""
+    ids = [i for i, r in enumerate(plan.rooms) if r.role == "hall"]
+    with_facade = [i for i in ids if exterior_walls(plan, i)]
+    if not with_facade:
+        return -1
+    boxes = [r.bounds for r in plan.rooms]
+    cx = (min(b[0] for b in boxes) + max(b[2] for b in boxes)) / 2
+    cy = (min(b[1] for b in boxes) + max(b[3] for b in boxes)) / 2
+
+    def off_centre(i: int) -> float:
+        x0, y0, x1, y1 = plan.rooms[i].bounds
+        return abs((x0 + x1) / 2 - cx) + abs((y0 + y1) / 2 - cy)
+
+    lobby = min(with_facade, key=off_centre)
+    plan.rooms[lobby].role = "lobby"
+    return lobby
+
+
+def _corridors(
+    plan: Plan,
+    regions: Regions,
+    model: BuildingTypeModel,
+    rng: np.random.Generator,
+    dims: Dims,
+    style: WingStyle,
+) -> None:
+    """Cut the corridor lines into segments, as many as the model's corridor share asks for.
+
+    The count is scaled by ``style.corridor_cuts``; stubs of service cores count as corridors.
+    """
+    p = model.shares()
+    others = sum(1 for r in plan.rooms if r.label is not C)
+    stubs = sum(1 for r in plan.rooms if r.label is C)
+    want = round(style.corridor_cuts * p[C] / max(1 - p[C], 1e-6) * others) - stubs
+    junctions: list[Rect] = [r for _, rects in regions.halls for r in rects] + regions.corridors
+    min_len = max(4 * dims.corridor, to_units(6.0))
+    fronts = corridor_fronts(plan, regions.corridors)
+    for seg in segment_corridors(regions.corridors, want, rng, min_len, junctions, fronts, DOOR_NEED):
+        plan.add(PlanRoom([seg], C, role="corridor"))
+
+
+def _entrances(
+    plan: Plan, rng: np.random.Generator, lobby: int, style: WingStyle, model: BuildingTypeModel
+) -> None:
+    """The main entrance in the lobby (or at a corridor end), side doors in halls, exits at corridor ends.
+
+    Other halls on the facade get a side door with the probability that makes their share of
+    doors to the outside the model's.
+    """
+    placed = False
+    p_side = min(1.0, model.connection(H, "outside") * model.stats(H).doors_mean)
+    for i, r in enumerate(plan.rooms):
+        if r.role not in ("lobby", "hall") or (i != lobby and rng.random() >= p_side):
+            continue
+        placed |= add_exterior_door(plan, i, RULES.entrance if i == lobby else RULES.exit)
+    for i, r in enumerate(plan.rooms):
+        if r.role != "corridor" or (placed and rng.random() >= style.exit_p):
+            continue
+        x0, y0, x1, y1 = r.rects[0]
+        across = "v" if (x1 - x0) >= (y1 - y0) else "h"
+        placed |= add_exterior_door(plan, i, RULES.exit, axis=across, margin=RULES.open_margin)
+    if not placed:
+        order = sorted(
+            range(len(plan.rooms)),
+            key=lambda i: (not plan.rooms[i].is_circulation, plan.rooms[i].role == "annex"),
+        )
+        any(add_exterior_door(plan, i, RULES.room) for i in order)
+
+
+def _clamp(v: float, lo_hi: tuple[float, float]) -> float:
+    return min(max(v, lo_hi[0]), lo_hi[1])
+
+
+def layout_dims(rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle) -> Dims:
+    """Corridor width and room depths from the model's corridors, medium and small rooms.
+
+    A corridor of mean area ``a`` and axes ratio ``r`` is ``sqrt(a / r)`` wide; a strip of rooms
+    is as deep as a square medium room, ``sqrt(a)`` (a strip of small rooms likewise); the
+    style keeps both within the type's usual ranges.
+    """
+    c, m, s, h = (model.stats(lab) for lab in (C, M, S, H))
+    corridor = _clamp(
+        style.corridor_scale * math.sqrt(c.area_mean / max(c.axes_ratio_mean, 1.0)), style.corridor_width_m
+    )
+    depth = _clamp(style.depth_scale * math.sqrt(m.area_mean), style.room_depth_m)
+    shallow = _clamp(math.sqrt(s.area_mean), style.shallow_depth_m)
+    return Dims(
+        corridor=to_units(corridor * rng.uniform(0.9, 1.1)),
+        depth=to_units(depth * rng.uniform(0.92, 1.08)),
+        shallow=to_units(shallow),
+        hall_area=round(h.area_mean * 100),
+    )

@@ -24,10 +24,11 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
     """Write the twins of every readable plan of ``args.like``; skip and count the others."""
     from tqdm import tqdm
 
+    from realistic_indoor.cli._world3d import save_options
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.files import check_output_dir
     from realistic_indoor.generator import generate_like
-    from realistic_indoor.io import format_of, save
+    from realistic_indoor.io import save
     from realistic_indoor.validator.plan_sets import PlanBatch, plan_files, show_progress
 
     if args.output or args.png or args.area is not None:
@@ -41,7 +42,7 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
         raise ConfigError(f"--count must be at least 1, not {count}")
     out = check_output_dir(args.out_dir, "--out-dir")
     ext = "." + args.format.lstrip(".")
-    format_of(f"x{ext}")
+    options = save_options(args, f"x{ext}")
     files = plan_files(args.like)
     if not files:
         raise ConfigError(f"--like {args.like}: no plans there (plans end in .json or .xml)")
@@ -50,7 +51,7 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
     twins = generate_like(plans, args.type, count, args.seed or 0, **options)
     written = clamped = 0
     for twin in tqdm(twins, desc=f"{args.type} twins", unit="building", disable=not show_progress()):
-        save(twin.building, out / f"{twin.name}{ext}")
+        save(twin.building, out / f"{twin.name}{ext}", **options)
         written += 1
         if twin.clamped:
             clamped += 1

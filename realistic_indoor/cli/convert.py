@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.cli._batch import add_output_options, run_batch
 from realistic_indoor.cli._plans import add_infer_entrances, load_plan
+from realistic_indoor.cli._world3d import add_world_options, save_options
 
 if TYPE_CHECKING:
     from realistic_indoor.building import Building
@@ -16,6 +17,7 @@ if TYPE_CHECKING:
 EPILOG = """\
 examples:
   realistic-indoor convert office.json -o office.yaml --resolution 0.05
+  realistic-indoor convert office.json -o office.sdf --wall-height 3 --closed-entrances   # Gazebo world
   realistic-indoor convert ../shared/data/real_floorplans/office --out-dir maps/ --format yaml --infer-entrances
 
 With --out-dir, PLAN is a file, a folder (every readable plan below it, recursively) or a quoted
@@ -52,6 +54,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--resolution", type=float, default=0.05, help="ROS map resolution, metres per pixel (default 0.05)"
     )
+    add_world_options(p)
     add_infer_entrances(p)
     p.set_defaults(func=run)
 
@@ -59,24 +62,24 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Read, write, and report the files written."""
     from realistic_indoor.errors import ConfigError
-    from realistic_indoor.io import format_of
 
     if args.out_dir:
-        return run_batch(args, lambda b, path: _save(b, path, args.resolution), "converted")
+        if args.format is not None:
+            save_options(args, f"plan.{args.format}", args.resolution)
+        return run_batch(args, lambda b, path: _save(b, path, args), "converted")
     if Path(args.plan).is_dir():
         raise ConfigError(f"{args.plan} is a folder; convert its plans with --out-dir DIR --format EXT")
     if args.format is not None:
         raise ConfigError("--format goes with --out-dir; with -o the output's ending picks the format")
-    format_of(args.output)
+    save_options(args, args.output, args.resolution)
     b = load_plan(args)
-    for path in _save(b, Path(args.output), args.resolution):
+    for path in _save(b, Path(args.output), args):
         print(f"wrote {path}")
     return 0
 
 
-def _save(building: Building, path: Path, resolution_m: float) -> list[Path]:
-    """Write ``building`` to ``path``; a ROS map gets ``resolution_m`` (metres per pixel)."""
-    from realistic_indoor.io import format_of, save
+def _save(building: Building, path: Path, args: argparse.Namespace) -> list[Path]:
+    """Write ``building`` to ``path`` with the options its format takes (resolution, 3D walls)."""
+    from realistic_indoor.io import save
 
-    options = {"resolution_m": resolution_m} if format_of(path) == "ros" else {}
-    return save(building, path, **options)
+    return save(building, path, **save_options(args, path, args.resolution))

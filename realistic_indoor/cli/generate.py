@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from realistic_indoor.cli._like import add_like_options, run_like
+from realistic_indoor.cli._world3d import add_world_options, save_options
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -19,11 +20,13 @@ def register(sub: argparse._SubParsersAction) -> None:
         description="Generate a building of a type whose statistics match real buildings of that "
         "type, or a random World-Generator-like map. You choose the floor area, never width and "
         "height: the footprint's proportions come out of the layout. Output formats follow the "
-        "file extension (.json, .xml, .wg.xml, .yaml, .png, .svg).",
+        "file extension (.json, .xml, .wg.xml, .yaml, .png, .svg; 3D worlds .sdf, .world, "
+        ".mjcf.xml, .glb, .obj).",
         epilog="examples:\n"
         "  realistic-indoor generate --type school --area 3000 --seed 7 -o school.json --png school.png\n"
         "  realistic-indoor generate --type office --count 200 --out-dir maps/\n"
         "  realistic-indoor generate --type random --width 17 --height 13 -o random.wg.xml\n"
+        "  realistic-indoor generate --type office --seed 7 -o office.sdf   # a Gazebo world\n"
         "  realistic-indoor generate --type office --like real/offices/ --out-dir twins/   # same areas",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -45,6 +48,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--width", type=int, help="random maps: grid width in 3 m cells (with --height)")
     p.add_argument("--height", type=int, help="random maps: grid height in 3 m cells (with --width)")
     add_like_options(p)
+    add_world_options(p)
     p.set_defaults(func=run)
 
 
@@ -120,10 +124,9 @@ def run(args: argparse.Namespace) -> int:
 def _check_outputs(args: argparse.Namespace) -> None:
     """Refuse unwritable ``-o`` and ``--png`` paths before anything is generated."""
     from realistic_indoor.files import check_output_path
-    from realistic_indoor.io import format_of
 
     if args.output:
-        format_of(args.output)
+        save_options(args, args.output)
         check_output_path(args.output, "-o")
     if args.png:
         check_output_path(args.png, "--png", (".png", ".svg"))
@@ -136,9 +139,9 @@ def _one(gen, args: argparse.Namespace) -> int:
     b = generate_from(gen, args.seed)
     print(f"{args.type}, seed {b.metadata['seed']}")
     print(b.summary())
-    for target in (args.output, args.png):
+    for target, options in ((args.output, True), (args.png, False)):
         if target:
-            for path in save(b, target):
+            for path in save(b, target, **(save_options(args, target) if options else {})):
                 print(f"wrote {path}")
     return 0
 
@@ -149,18 +152,18 @@ def _many(gen, args: argparse.Namespace) -> int:
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.files import check_output_dir
     from realistic_indoor.generator import generate_from
-    from realistic_indoor.io import format_of, save
+    from realistic_indoor.io import save
 
     if args.png:
         raise ConfigError("--png draws one building; with --count use --format png (or svg) for pictures")
     out = check_output_dir(args.out_dir, "--out-dir")
     ext = "." + args.format.lstrip(".")
-    format_of(f"x{ext}")
+    options = save_options(args, f"x{ext}")
     first = args.seed if args.seed is not None else 0
     if first < 0:
         raise ConfigError(f"--seed must be a non-negative integer, not {first}")
     written = 0
     for seed in tqdm(range(first, first + args.count), desc=f"{args.type} buildings", unit="building"):
-        written += len(save(generate_from(gen, seed), out / f"{args.type}_{seed}{ext}"))
+        written += len(save(generate_from(gen, seed), out / f"{args.type}_{seed}{ext}", **options))
     print(f"wrote {args.count} buildings ({written} files) to {out}")
     return 0

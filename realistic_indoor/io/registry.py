@@ -22,6 +22,10 @@ FORMATS: dict[str, tuple[tuple[str, ...], str, bool, bool]] = {
     "ros": ((".yaml", ".pgm"), "ros_map", False, True),
     "png": ((".png",), "render", False, True),
     "svg": ((".svg",), "render", False, True),
+    "sdf": ((".sdf", ".world"), "world3d.sdf", False, True),
+    "mjcf": ((".mjcf.xml",), "world3d.mjcf", False, True),
+    "glb": ((".glb",), "world3d.gltf", False, True),
+    "obj": ((".obj",), "world3d.obj", False, True),
 }
 READABLE = tuple(k for k, v in FORMATS.items() if v[2])
 WRITABLE = tuple(k for k, v in FORMATS.items() if v[3])

@@ -45,7 +45,8 @@ def add_world_options(parser: argparse.ArgumentParser) -> None:
         "--door-height",
         type=float,
         metavar="M",
-        help=f"doorway height, metres; a lintel fills the wall above (default {DEFAULT_DOOR_HEIGHT_M:g})",
+        help=f"doorway height, metres; a lintel fills the wall above (default {DEFAULT_DOOR_HEIGHT_M:g}, "
+        "or the wall height if lower)",
     )
     group.add_argument(
         "--closed-entrances",

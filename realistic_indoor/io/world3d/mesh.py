@@ -57,7 +57,8 @@ def floor_mesh(room: Room) -> Mesh:
 
     triangles = shapely.constrained_delaunay_triangles(room.polygon)
     corners = np.array([np.asarray(t.exterior.coords)[:3] for t in triangles.geoms]).reshape(-1, 3, 2)
-    twice_area = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    (ux, uy), (vx, vy) = (corners[:, 1] - corners[:, 0]).T, (corners[:, 2] - corners[:, 0]).T
+    twice_area = ux * vy - uy * vx
     corners = corners[np.abs(twice_area) > 0]
     flip = twice_area[np.abs(twice_area) > 0] < 0
     corners[flip] = corners[flip][:, ::-1]

@@ -8,6 +8,7 @@ half its thickness lies on either side of the boundary the two rooms share.
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import re
@@ -60,6 +61,7 @@ class WorldOptions:
             share (rooms lose ``wall_thickness_m / 2`` of floor along each wall).
         door_height_m: Height of the doorways (m), > 0 and at most ``wall_height_m``; a lintel
             box fills the wall above each doorway. Equal to ``wall_height_m``: no lintels.
+            ``None`` (the default): 2.1 m, or the wall height if the walls are lower.
         exterior_doors_open: Whether entrances are open gaps (the default, as in the plan and
             the simulator) or closed by a door leaf, a box as thick as the walls filling the
             doorway up to ``door_height_m``.
@@ -67,12 +69,14 @@ class WorldOptions:
 
     wall_height_m: float = DEFAULT_WALL_HEIGHT_M
     wall_thickness_m: float = DEFAULT_WALL_THICKNESS_M
-    door_height_m: float = DEFAULT_DOOR_HEIGHT_M
+    door_height_m: float | None = None
     exterior_doors_open: bool = True
 
     def __post_init__(self) -> None:
         require_positive("WorldOptions", "wall_height_m", self.wall_height_m, "m")
         require_positive("WorldOptions", "wall_thickness_m", self.wall_thickness_m, "m")
+        if self.door_height_m is None:
+            object.__setattr__(self, "door_height_m", min(DEFAULT_DOOR_HEIGHT_M, self.wall_height_m))
         require_positive("WorldOptions", "door_height_m", self.door_height_m, "m")
         if self.door_height_m > self.wall_height_m:
             raise ConfigError(
@@ -280,12 +284,15 @@ def room_notes(building: Building) -> list[RoomNote]:
     return out
 
 
+@functools.lru_cache(maxsize=4)
 def start_pose(building: Building) -> tuple[float, float, float] | None:
     """Where the simulator starts the robot: ``(x, y, yaw)`` (m, m, rad), or ``None`` if it cannot.
 
     The pose of :meth:`realistic_indoor.sim.World.default_start_pose` (just inside the first
     entrance, else in the middle of the largest hall or room), so a robot spawned there in a
-    3D simulator starts where the 2D environments start it.
+    3D simulator starts where the 2D environments start it. Building the world takes about
+    0.1 s for a real plan; the last few buildings' poses are kept, so writing one building in
+    several formats builds it once.
     """
     from realistic_indoor.sim.world import World
 

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.validator.connectivity import CORE_FUNCTIONS
 
 if TYPE_CHECKING:
@@ -55,6 +56,8 @@ class FunctionRoles:
         core: The type's core functions (offices, classrooms, bedrooms): rooms without a door
             to a corridor rarely get them (default: the validator's core functions of the type).
         grouped: Functions that come only in groups, inside service cores (toilets).
+        core_on_facade: Also keep the core functions for rooms with an outside wall (windows):
+            in deep plans the rooms inside get meeting rooms, storage and services.
     """
 
     service: tuple[str, ...] = ()
@@ -63,6 +66,7 @@ class FunctionRoles:
     entrance: tuple[str, ...] = ()
     core: tuple[str, ...] = ()
     grouped: tuple[str, ...] = ("toilet", "washroom")
+    core_on_facade: bool = False
 
 
 def _core_functions(model: BuildingTypeModel) -> tuple[str, ...]:
@@ -100,7 +104,8 @@ def assign_functions(
             r.function = draw_function(rng, weights, avoid=roles.entrance)
         else:
             to_corridor = any(j is not None and plan.rooms[j].label is C for j in partners[i])
-            avoid = roles.grouped + (() if to_corridor else core)
+            inside = roles.core_on_facade and not exterior_walls(plan, i)
+            avoid = roles.grouped + (() if to_corridor and not inside else core)
             r.function = draw_function(rng, weights, avoid=avoid)
 
 

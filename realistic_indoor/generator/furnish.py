@@ -39,10 +39,20 @@ __all__ = ["connect_and_name", "layout_dims", "rooms_from_regions"]
 
 
 def rooms_from_regions(
-    regions: Regions, rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle, dims: Dims
+    regions: Regions,
+    rng: np.random.Generator,
+    model: BuildingTypeModel,
+    style: WingStyle,
+    dims: Dims,
+    hall_rooms: bool = True,
 ) -> Plan:
-    """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions."""
-    carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
+    """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions.
+
+    With ``hall_rooms``, large halls get a strip of rooms along a side (see
+    :func:`~realistic_indoor.generator.wings.halls.carve_hall_bays`).
+    """
+    if hall_rooms:
+        carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
     plan = Plan(exterior_holes=regions.holes)
     for _, rects in regions.halls:
         plan.add(PlanRoom(rects, H, role="hall"))
@@ -60,9 +70,17 @@ def rooms_from_regions(
 
 
 def connect_and_name(
-    plan: Plan, rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle
+    plan: Plan,
+    rng: np.random.Generator,
+    model: BuildingTypeModel,
+    style: WingStyle,
+    core_on_facade: bool = False,
 ) -> None:
-    """Doors (circulation, entrances, rooms, reachability, no mazes), then functions."""
+    """Doors (circulation, entrances, rooms, reachability, no mazes), then functions.
+
+    ``core_on_facade`` keeps the type's core function (offices, classrooms) for rooms with an
+    outside wall (see :class:`~realistic_indoor.generator.functions.FunctionRoles`).
+    """
     connect_circulation(plan)
     _entrances(plan, rng, _lobby(plan), style, model)
     connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
@@ -73,6 +91,8 @@ def connect_and_name(
         storage=style.storage_functions,
         ends=style.end_functions,
         entrance=style.entrance_functions,
+        grouped=style.grouped_functions,
+        core_on_facade=core_on_facade,
     )
     assign_functions(plan, model, rng, roles)
     _require(plan, style.required_functions)

@@ -5,6 +5,7 @@ from realistic_indoor.models.building_model import (
     LabelStats,
     LocalStructures,
     default_model,
+    real_model,
 )
 from realistic_indoor.models.fit import fit_model
 from realistic_indoor.models.reference import REFERENCE_SETS, connectivity_facts, reference_table
@@ -17,5 +18,6 @@ __all__ = [
     "connectivity_facts",
     "default_model",
     "fit_model",
+    "real_model",
     "reference_table",
 ]

@@ -17,7 +17,15 @@ if TYPE_CHECKING:
 
     import numpy as np
 
-__all__ = ["OUTSIDE", "BuildingTypeModel", "LabelStats", "LocalStructures", "default_model"]
+__all__ = [
+    "OUTSIDE",
+    "REAL_MODEL_TYPES",
+    "BuildingTypeModel",
+    "LabelStats",
+    "LocalStructures",
+    "default_model",
+    "real_model",
+]
 
 OUTSIDE = "outside"
 """Key of :attr:`BuildingTypeModel.connections` for exterior doors."""
@@ -240,3 +248,29 @@ def default_model(building_type: str | BuildingType) -> BuildingTypeModel:
         structures=LocalStructures(**spec["structures"]),
         source="paper Table 1 (Amigoni et al., RoboCup 2014) + package function mixes",
     )
+
+
+REAL_MODEL_TYPES = ("office", "school")
+"""Types with a model fitted to real plans shipped as package data (no real house plans are)."""
+
+
+@cache
+def real_model(building_type: str | BuildingType) -> BuildingTypeModel:
+    """The model fitted to the shared real plans of a type: the generators' default for it.
+
+    Read from package data (``data/real_models.json``, written by
+    ``scripts/fit_real_models.py`` with :func:`realistic_indoor.models.fit_model` over every
+    shared real plan of the type). Where the paper's Table 1 and the real plans disagree (room
+    areas, hence circulation share and room density), this model follows the real plans.
+
+    Args:
+        building_type: ``"office"`` or ``"school"`` (see :data:`REAL_MODEL_TYPES`).
+
+    Raises:
+        ConfigError: For any other type; the message lists the valid ones.
+    """
+    key = parse_building_type(building_type).value
+    if key not in REAL_MODEL_TYPES:
+        raise ConfigError(f"no model fitted to real plans for {key!r}; valid: {', '.join(REAL_MODEL_TYPES)}")
+    text = resources.files("realistic_indoor").joinpath("data/real_models.json").read_text("utf-8")
+    return BuildingTypeModel.from_dict(json.loads(text)[key])

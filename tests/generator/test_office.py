@@ -50,7 +50,7 @@ def test_office__corridors_chain_into_each_other(samples):
 
 def test_office__halls_at_the_entrance_and_at_corridor_junctions(samples):
     entrance_halls = junction_halls = halls = 0
-    for b in samples("office"):
+    for b in samples("office", "paper"):
         entrance_halls += any(b.room(d.room_a).label is H for d in b.entrances)
         for r in b.rooms:
             if r.label is H:
@@ -60,13 +60,19 @@ def test_office__halls_at_the_entrance_and_at_corridor_junctions(samples):
     assert junction_halls / halls >= 0.7
 
 
+def test_office__the_default_layout_enters_through_a_hall(samples):
+    entrance_halls = sum(any(b.room(d.room_a).label is H for d in b.entrances) for b in samples("office"))
+    assert entrance_halls / 200 >= 0.8
+
+
 def test_office__toilets_and_storage_are_grouped(samples):
-    service = {"toilet", "storage", "stairs", "elevator", "washroom", "closet"}
+    lavatories = {"toilet", "washroom", "bathroom"}
+    service = lavatories | {"storage", "stairs", "elevator", "closet"}
     grouped = toilets = 0
     for b in samples("office")[:60]:
         polys = {r.id: r.polygon for r in b.rooms}
         for r in b.rooms:
-            if r.function != "toilet":
+            if r.function not in lavatories:
                 continue
             toilets += 1
             grouped += any(

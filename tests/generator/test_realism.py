@@ -1,4 +1,4 @@
-"""Generated buildings match the paper's Table 1 for their type (over 200 buildings each)."""
+"""With the paper's model, generated buildings match its Table 1 for their type (over 200 buildings each)."""
 
 import pytest
 
@@ -18,7 +18,7 @@ def tables(samples):
 
     def get(kind):
         if kind not in cache:
-            cache[kind] = (label_table(samples(kind)), reference_table(kind))
+            cache[kind] = (label_table(samples(kind, "paper")), reference_table(kind))
         return cache[kind]
 
     return get
@@ -54,7 +54,7 @@ def test_realism__corridor_axes_ratio_within_2_of_table_1(kind, tables):
 
 @pytest.fixture(scope="module")
 def office_connectivity(samples):
-    return Connectivity.combine([connectivity(b) for b in samples("office")])
+    return Connectivity.combine([connectivity(b) for b in samples("office", "paper")])
 
 
 def test_office__offices_touch_a_corridor(office_connectivity):

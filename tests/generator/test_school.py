@@ -48,7 +48,7 @@ def test_school__the_gym_is_a_hall_reached_from_circulation(samples):
         assert any(d.other(gym.id) and b.room(d.other(gym.id)).label in (C, H) for d in b.doors_of[gym.id])
 
 
-def test_school__small_rooms_outnumber_classrooms(samples):
-    small = sum(r.label is SemanticLabel.SMALL for b in samples("school") for r in b.rooms)
-    medium = sum(r.label is SemanticLabel.MEDIUM for b in samples("school") for r in b.rooms)
+def test_school__small_rooms_outnumber_classrooms_with_the_papers_model(samples):
+    small = sum(r.label is SemanticLabel.SMALL for b in samples("school", "paper") for r in b.rooms)
+    medium = sum(r.label is SemanticLabel.MEDIUM for b in samples("school", "paper") for r in b.rooms)
     assert small > 2 * medium

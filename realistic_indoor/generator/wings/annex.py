@@ -34,6 +34,16 @@ def _free(plan: Plan, box: Rect) -> bool:
     )
 
 
+def _built(plan: Plan, strip: Rect) -> bool:
+    """Whether rooms cover all of ``strip`` (the annex's back leaves no pocket of void behind it)."""
+    covered = sum(
+        max(0, min(strip[2], r[2]) - max(strip[0], r[0])) * max(0, min(strip[3], r[3]) - max(strip[1], r[1]))
+        for room in plan.rooms
+        for r in room.rects
+    )
+    return covered >= (strip[2] - strip[0]) * (strip[3] - strip[1])
+
+
 def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: float) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 
@@ -41,7 +51,8 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
 
     Tries the facades of corridors and halls in random order, each with the annex's long side
     along or across the facade and centred on it or flush with either end, and keeps the first
-    that overlaps nothing; where nothing fits, a smaller annex (80%, then 65%) is tried.
+    that overlaps nothing and whose back lies against the building all along (no pocket of void
+    enclosed behind it); where nothing fits, a smaller annex (80%, then 65%) is tried.
 
     Returns:
         The annex's room index, or -1 if there was no free place (the building is then smaller
@@ -75,7 +86,9 @@ def _fit(plan: Plan, w: Contact, sign: int, long_side: float, short_side: float)
         c0, c1 = (w.coord, w.coord + round(depth)) if sign > 0 else (w.coord - round(depth), w.coord)
         for a in starts:
             box = (c0, a, c1, a + size) if w.axis == "v" else (a, c0, a + size, c1)
-            if min(a + size, w.hi) - max(a, w.lo) >= need and _free(plan, box):
+            back = w.coord - 1 if sign > 0 else w.coord
+            behind = (back, a, back + 1, a + size) if w.axis == "v" else (a, back, a + size, back + 1)
+            if min(a + size, w.hi) - max(a, w.lo) >= need and _free(plan, box) and _built(plan, behind):
                 return box
     return None
 

@@ -39,6 +39,8 @@ class WingStyle:
         storage_functions: Functions of closets and rooms entered through other rooms.
         end_functions: Functions of the small rooms that close dead-end corridors.
         entrance_functions: Functions of the entrance hall.
+        grouped_functions: Functions that come only in groups, inside service cores (toilets,
+            washrooms): other rooms rarely get them.
         annex: Function of a large hall added beside the wings (``"gym"`` for schools), or empty.
         annex_area_m2: Range of the annex's area (m2).
         annex_functions: Functions of the small rooms along the annex's far side, in turn.
@@ -67,6 +69,7 @@ class WingStyle:
     storage_functions: tuple[str, ...] = ("closet", "storage", "archive")
     end_functions: tuple[str, ...] = ("stairs", "storage", "elevator")
     entrance_functions: tuple[str, ...] = ("lobby", "entrance")
+    grouped_functions: tuple[str, ...] = ("toilet", "washroom", "bathroom")
     annex: str = ""
     annex_area_m2: tuple[float, float] = (0.0, 0.0)
     annex_functions: tuple[str, ...] = ("washroom", "washroom", "storage")

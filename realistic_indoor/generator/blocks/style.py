@@ -1,0 +1,66 @@
+"""How a building type arranges its blocks: proportions, cores, crossings, courts and halls."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["OFFICE_BLOCKS", "SCHOOL_BLOCKS", "BlockStyle"]
+
+
+@dataclass(frozen=True)
+class BlockStyle:
+    """Conventions of the block layout that a building type's room statistics do not carry.
+
+    Attributes:
+        aspect: Range of the footprint's length over its depth, drawn log-uniformly (>= 1).
+        facade_scale: Range of the depth of a strip of rooms on the facade over the type's
+            strip depth (the model's, see ``furnish.layout_dims``).
+        core_scale: Range of the depth of a strip of rooms inside the block (back to back with
+            another across the core) over the depth of a strip on the facade.
+        section_m: Range of the distance between two corridors crossing the core (m).
+        step_p: Probability that a facade strip steps back over part of its length.
+        step_m: Range of the step's depth (m).
+        notch_p: Probability that a facade strip is left out at one end of the block, the
+            corridor running along the facade there (an L- or U-shaped footprint).
+        court_p: Probability that a core section is a courtyard instead of rooms.
+        core_hall_p: Share of the halls (after the lobby) set across a core, joining the two
+            corridors beside it; the others open onto a facade strip.
+        hall_area_scale: The halls' area over the model's mean hall area.
+    """
+
+    aspect: tuple[float, float]
+    facade_scale: tuple[float, float] = (0.95, 1.1)
+    core_scale: tuple[float, float] = (0.8, 1.1)
+    section_m: tuple[float, float] = (20.0, 36.0)
+    step_p: float = 0.5
+    step_m: tuple[float, float] = (1.0, 2.5)
+    notch_p: float = 0.2
+    court_p: float = 0.0
+    core_hall_p: float = 0.5
+    hall_area_scale: float = 1.0
+
+
+OFFICE_BLOCKS = BlockStyle(
+    aspect=(1.0, 2.2),
+    facade_scale=(1.05, 1.35),
+    core_scale=(1.1, 1.7),
+    section_m=(30.0, 55.0),
+    step_p=0.6,
+    step_m=(1.0, 3.0),
+    notch_p=0.3,
+    core_hall_p=0.3,
+)
+"""Offices: compact deep plans, ring corridors around cores of rooms and halls."""
+
+SCHOOL_BLOCKS = BlockStyle(
+    aspect=(1.1, 2.8),
+    facade_scale=(0.95, 1.1),
+    core_scale=(0.9, 1.1),
+    section_m=(35.0, 60.0),
+    step_p=0.5,
+    step_m=(1.0, 3.0),
+    notch_p=0.4,
+    court_p=0.35,
+    core_hall_p=0.3,
+)
+"""Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

@@ -1,4 +1,4 @@
-"""Reading and writing buildings: JSON, floor-plan XML, World Generator XML, ROS maps, pictures.
+"""Reading and writing buildings: JSON, floor-plan XML, World Generator XML, ROS maps, pictures, 3D worlds.
 
 ``load(path)`` and ``save(building, path)`` choose the format from the file name.
 """

@@ -10,6 +10,7 @@ import math
 import numpy as np
 import pytest
 
+import realistic_indoor as ri
 from realistic_indoor.io import save
 from realistic_indoor.io.world3d import WorldOptions, building_boxes
 from realistic_indoor.sim import World, WorldConfig
@@ -128,6 +129,13 @@ def test_mujoco__closed_entrances_stop_the_rays_that_left(slanted, tmp_path):
     assert _mujoco_range(model, data, 2.0, 2.0, math.pi) == pytest.approx(2.0 - 0.05)
     model, data = _compile(slanted, tmp_path / "open.mjcf.xml")
     assert _mujoco_range(model, data, 2.0, 2.0, math.pi) == math.inf
+
+
+@pytest.mark.parametrize("kind", ["office", "school", "house", "random"])
+def test_mujoco__compiles_every_generated_type(kind, tmp_path):
+    b = ri.generate(kind, seed=5)
+    model, _data = _compile(b, tmp_path / f"{kind}.mjcf.xml", exterior_doors_open=False)
+    assert model.ngeom == 1 + len(building_boxes(b, WorldOptions(exterior_doors_open=False)))
 
 
 def test_mujoco__compiles_every_shared_real_plan(real_plans_dir, tmp_path):

@@ -44,7 +44,16 @@ def register(sub: argparse._SubParsersAction) -> None:
         default="json",
         help="extension of the --count files: json, xml, wg.xml, png, ... (default json)",
     )
-    p.add_argument("--model", help="JSON file of a fitted building-type model (see fit_model) to draw from")
+    p.add_argument(
+        "--model",
+        help="offices and schools: 'real' (default: fitted to real plans), 'paper' (Table 1, wing layout) "
+        "or a JSON file of a fitted building-type model (see fit_model)",
+    )
+    p.add_argument(
+        "--layout",
+        choices=("blocks", "wings"),
+        help="offices and schools: compact blocks (default) or wings (default with --model paper)",
+    )
     p.add_argument("--width", type=int, help="random maps: grid width in 3 m cells (with --height)")
     p.add_argument("--height", type=int, help="random maps: grid height in 3 m cells (with --width)")
     add_like_options(p)
@@ -71,7 +80,12 @@ def _options(args: argparse.Namespace) -> dict:
     if args.model:
         if args.type == "random":
             raise ConfigError("--model drives the realistic generators, not --type random")
-        options["model"] = _read_model(Path(args.model))
+        named = args.model in ("real", "paper") and args.type in ("office", "school")
+        options["model"] = args.model if named else _read_model(Path(args.model))
+    if getattr(args, "layout", None):
+        if args.type not in ("office", "school"):
+            raise ConfigError(f"--layout chooses how offices and schools are laid out, not --type {args.type}")
+        options["layout"] = args.layout
     return options
 
 

@@ -49,7 +49,12 @@ def _door_to(plan: Plan, i: int, j: int, rng: np.random.Generator, width: int, w
 
 
 def connect_rooms(
-    plan: Plan, model: BuildingTypeModel, rng: np.random.Generator, pairs: float, only: set[int] | None = None
+    plan: Plan,
+    model: BuildingTypeModel,
+    rng: np.random.Generator,
+    pairs: float,
+    only: set[int] | None = None,
+    per_room: int = 1,
 ) -> None:
     """Doors of every room that is not a corridor or hall.
 
@@ -59,6 +64,9 @@ def connect_rooms(
         rng: Random source.
         pairs: Share of medium and big rooms to give a connecting door to a neighbour.
         only: If given, just these rooms get doors (the others keep theirs).
+        per_room: Most second doors one room may get while bringing its label's mean door
+            count to the model's: 1 spreads them over many rooms, more gathers them in fewer
+            (real plans have most rooms with one door and a few with several).
     """
     chosen = set(range(len(plan.rooms))) if only is None else only
     neighbours = plan.neighbours()
@@ -71,7 +79,7 @@ def connect_rooms(
             continue
         _primary_door(plan, i, options[i], p_hall[room.label], rng)
     _connecting_doors(plan, neighbours, rng, pairs, chosen)
-    _extra_doors(plan, neighbours, model, rng, chosen)
+    _extra_doors(plan, neighbours, model, rng, chosen, per_room)
 
 
 def _circulation_options(plan: Plan, i: int, near: list[int]) -> dict[SemanticLabel, list[int]]:
@@ -151,8 +159,9 @@ def _extra_doors(
     model: BuildingTypeModel,
     rng: np.random.Generator,
     chosen: set[int],
+    per_room: int = 1,
 ) -> None:
-    """Second doors (to circulation or outside) until each label's mean door count is the model's."""
+    """Further doors (to circulation or outside) until each label's mean door count is the model's."""
     counts = plan.door_count()
     for label in ROOM_LABELS:
         rooms = [i for i, r in enumerate(plan.rooms) if r.label is label and r.role == "room" and i in chosen]
@@ -165,7 +174,11 @@ def _extra_doors(
         for i in rooms:
             if deficit < 0.5 and rng.random() > deficit:
                 break
-            if _one_more_door(plan, i, neighbours[i], rng, outside=rng.random() < p_out):
+            for _ in range(per_room):
+                if deficit <= 0 or not _one_more_door(
+                    plan, i, neighbours[i], rng, outside=rng.random() < p_out
+                ):
+                    break
                 deficit -= 1
 
 

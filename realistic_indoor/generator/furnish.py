@@ -75,15 +75,18 @@ def connect_and_name(
     model: BuildingTypeModel,
     style: WingStyle,
     core_on_facade: bool = False,
+    doors_per_room: int = 1,
 ) -> None:
     """Doors (circulation, entrances, rooms, reachability, no mazes), then functions.
 
     ``core_on_facade`` keeps the type's core function (offices, classrooms) for rooms with an
-    outside wall (see :class:`~realistic_indoor.generator.functions.FunctionRoles`).
+    outside wall (see :class:`~realistic_indoor.generator.functions.FunctionRoles`);
+    ``doors_per_room`` is the most further doors one room gets (see
+    :func:`~realistic_indoor.generator.connect.connect_rooms`).
     """
     connect_circulation(plan)
     _entrances(plan, rng, _lobby(plan), style, model)
-    connect_rooms(plan, model, rng, model.structures.connected_room_pairs)
+    connect_rooms(plan, model, rng, model.structures.connected_room_pairs, per_room=doors_per_room)
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
     roles = FunctionRoles(

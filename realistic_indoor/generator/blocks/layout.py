@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.blocks.paint import paint_block
@@ -46,7 +47,7 @@ def block_plan(
     if laid is None:
         laid = _lay_out(rng, area_m2, model, style, blocks, 0.0)
     plan, section = laid
-    connect_and_name(plan, rng, model, style, core_on_facade=True)
+    connect_and_name(plan, rng, model, style, core_on_facade=True, doors_per_room=blocks.doors_per_room)
     return plan, {"shape": _shape_name(section)}
 
 
@@ -65,6 +66,7 @@ def _lay_out(
 ) -> tuple[Plan, Section] | None:
     """Rooms and corridors of the block and the annex (``None`` if the annex found no place)."""
     dims = layout_dims(rng, model, style)
+    dims = replace(dims, corridor=round(dims.corridor * blocks.corridor_scale))
     area = round((area_m2 - annex_m2) * 100)
     n_halls = int(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area() + rng.random())
     section, length = draw_section(rng, area, dims, blocks, n_halls, model.stats(H).area_mean * 100)

@@ -55,11 +55,13 @@ def paint_block(s: Section, length: int) -> Regions:
     regions.corridors = _corridors(s, f)
     courts = _courts(s, f)
     regions.holes = [rect for rects in courts.values() for rect in rects]
-    taken = {key: [(r[0], r[2]) for r in rects] for key, rects in courts.items()}
+    taken: dict = {"S": [], "N": []}
     for j in range(s.bars - 1):
-        taken.setdefault(j, []).extend(f.crossings)
+        blocked = list(f.crossings) + [(r[0], r[2]) for r in courts.get(j, [])]
+        taken[(j, "lo")], taken[(j, "hi")] = blocked, list(blocked)
+    apart: dict = {}
     for i, hall in enumerate(s.halls):
-        rect = _place_hall(s, f, hall, taken)
+        rect = _place_hall(s, f, hall, taken, apart)
         if rect is not None:
             regions.halls.append((("hall", i), [rect]))
     regions.bays = _facade_bays(s, f, taken) + _core_bays(s, f, taken) + _end_bays(s, f)
@@ -104,27 +106,34 @@ def _courts(s: Section, f: _Frame) -> dict[int, list[Rect]]:
     return out
 
 
-def _span(s: Section, f: _Frame, where: str | int) -> tuple[tuple[int, int], tuple[int, int]]:
-    """Where a hall may go: its range along the block and its extent across."""
+def _span(s: Section, f: _Frame, hall: Hall) -> tuple[tuple[int, int], tuple[int, int], list]:
+    """Where a hall may go: its range along the block, its extent across, and the strips it takes."""
     c = s.corridor
-    if where == "S":
-        return _facade_range(s, f), (0, f.lines[0])
-    if where == "N":
-        return _facade_range(s, f), (f.lines[-1] + c, f.lines[-1] + c + s.depths[-1][1])
-    return f.run, f.core(int(where), c)
+    if hall.where == "S":
+        return _facade_range(s, f), (0, f.lines[0]), ["S"]
+    if hall.where == "N":
+        return _facade_range(s, f), (f.lines[-1] + c, f.lines[-1] + c + s.depths[-1][1]), ["N"]
+    j = int(hall.where)
+    y0, y1 = f.core(j, c)
+    if hall.through:
+        return f.run, (y0, y1), [(j, "lo"), (j, "hi")]
+    mid = y0 + s.depths[j][1]
+    return f.run, ((y0, mid) if hall.half == "lo" else (mid, y1)), [(j, hall.half)]
 
 
 def _facade_range(s: Section, f: _Frame) -> tuple[int, int]:
     return (s.end_depth, f.length - s.end_depth) if s.bars > 1 else (0, f.length)
 
 
-def _place_hall(s: Section, f: _Frame, hall: Hall, taken: dict) -> Rect | None:
-    """The hall's rectangle in the free stretch nearest its place (``None``: no room for it)."""
-    (lo, hi), (y0, y1) = _span(s, f, hall.where)
-    if hall.where in ("S", "N") and s.bars > 1:
-        lo, hi = f.run
+def _place_hall(s: Section, f: _Frame, hall: Hall, taken: dict, halls: dict) -> Rect | None:
+    """The hall's rectangle in the free stretch nearest its place (``None``: no room for it).
+
+    Halls keep a room's width (:data:`MIN_PIECE_M`) from each other: two halls side by side
+    would be one hall with a door in the middle.
+    """
+    (lo, hi), (y0, y1), keys = _span(s, f, hall)
     width = max(round(hall.area / max(y1 - y0, 1)), to_units(MIN_HALL_M), 2 * s.corridor)
-    used = taken.setdefault(hall.where, [])
+    used = sorted({iv for key in keys for iv in taken[key] + halls.setdefault(key, [])})
     want = lo + round(hall.at * (hi - lo))
     best = None
     for a, b in subtract_intervals(lo, hi, used):
@@ -138,7 +147,10 @@ def _place_hall(s: Section, f: _Frame, hall: Hall, taken: dict) -> Rect | None:
         return None
     x, w = best
     x, w = _snapped(x, w, subtract_intervals(lo, hi, used))
-    used.append((x, x + w))
+    gap = to_units(MIN_PIECE_M)
+    for key in keys:
+        taken[key].append((x, x + w))
+        halls[key].append((x - gap, x + w + gap))
     return (x, y0, x + w, y1)
 
 
@@ -195,8 +207,8 @@ def _core_bays(s: Section, f: _Frame, taken: dict) -> list[Bay]:
     for j in range(s.bars - 1):
         y0, y1 = f.core(j, s.corridor)
         mid = y0 + s.depths[j][1]
-        for a, b in _pieces(*f.run, taken.get(j, [])):
-            out += [Bay((a, y0, b, mid), "x", "S"), Bay((a, mid, b, y1), "x", "N")]
+        out += [Bay((a, y0, b, mid), "x", "S") for a, b in _pieces(*f.run, taken[(j, "lo")])]
+        out += [Bay((a, mid, b, y1), "x", "N") for a, b in _pieces(*f.run, taken[(j, "hi")])]
     return out
 
 

@@ -39,11 +39,16 @@ class Hall:
             corridor; an integer ``j``: across core ``j``, joining corridors ``j`` and ``j + 1``.
         at: Position of its middle along the block (fraction of the inner run).
         area: Floor area wanted (square units).
+        through: Across a core: whether the hall reaches both corridors (else it takes the
+            core's strip on the side of ``half`` and opens onto that corridor only).
+        half: ``"lo"`` or ``"hi"``: the core's strip a hall that is not ``through`` takes.
     """
 
     where: str | int
     at: float
     area: int
+    through: bool = True
+    half: str = "lo"
 
 
 @dataclass(frozen=True)
@@ -104,10 +109,7 @@ def draw_section(
         hall_area: Mean hall area (square units).
     """
     aspect = math.exp(rng.uniform(*(math.log(a) for a in style.aspect)))
-    bar = round(dims.depth * (sum(style.facade_scale) + sum(style.core_scale)) / 2) + dims.corridor
-    k = max(1, round(math.sqrt(area / aspect) / bar))
-    while k > 1 and area / (k * bar) < 2 * dims.depth + 4 * dims.corridor + to_units(8.0):
-        k -= 1
+    k = _bars_for(area, aspect, dims, style)
     depths = _bar_depths(rng, k, dims.depth, style)
     corridor = dims.corridor
     depth = sum(s + n + corridor for s, n in depths)
@@ -119,6 +121,25 @@ def draw_section(
     courts = _courts(rng, k, len(crossings) + 1, inner, style, depths, corridor)
     steps = _steps(rng, depths, style)
     return Section(tuple(depths), corridor, end, crossings, halls, courts, steps), length
+
+
+def _bars_for(area: int, aspect: float, dims: Dims, style: BlockStyle) -> int:
+    """The number of bars whose block, at the area, comes nearest the aspect ratio.
+
+    A block of ``k`` bars is two facade strips, ``2 (k - 1)`` core strips and ``k`` corridors
+    deep (mean depths); its length is the area over that depth.
+    """
+    facade = dims.depth * sum(style.facade_scale) / 2
+    core = dims.depth * sum(style.core_scale) / 2
+
+    def miss(k: int) -> float:
+        depth = 2 * facade + 2 * (k - 1) * core + k * dims.corridor
+        length = area / depth
+        if k > 1 and length < 2 * facade + 2 * dims.corridor + to_units(8.0):
+            return math.inf
+        return abs(abs(math.log(length / depth)) - math.log(aspect))
+
+    return min(range(1, 40), key=miss)
 
 
 def _bar_depths(rng: np.random.Generator, k: int, depth: int, style: BlockStyle) -> list[tuple[int, int]]:
@@ -152,7 +173,9 @@ def _halls(rng: np.random.Generator, k: int, n: int, area: float, style: BlockSt
         else:
             where = "SN"[int(rng.integers(2))]
         size = round(area * style.hall_area_scale * math.exp(rng.normal(0.0, 0.35)))
-        halls.append(Hall(where, float(rng.uniform(0.05, 0.95)), size))
+        through = bool(rng.random() < style.through_hall_p)
+        half = "lo" if rng.random() < 0.5 else "hi"
+        halls.append(Hall(where, float(rng.uniform(0.05, 0.95)), size, through, half))
     return tuple(halls)
 
 

@@ -26,6 +26,10 @@ class BlockStyle:
         core_hall_p: Share of the halls (after the lobby) set across a core, joining the two
             corridors beside it; the others open onto a facade strip.
         hall_area_scale: The halls' area over the model's mean hall area.
+        through_hall_p: Probability that a hall across a core reaches both corridors beside
+            it (else it takes one strip and opens onto one corridor).
+        corridor_scale: Corridor width over the width the wing layout would use.
+        doors_per_room: Most further doors one room gets (see ``connect_rooms``).
     """
 
     aspect: tuple[float, float]
@@ -38,6 +42,9 @@ class BlockStyle:
     court_p: float = 0.0
     core_hall_p: float = 0.5
     hall_area_scale: float = 1.0
+    through_hall_p: float = 0.3
+    corridor_scale: float = 1.0
+    doors_per_room: int = 3
 
 
 OFFICE_BLOCKS = BlockStyle(
@@ -62,5 +69,6 @@ SCHOOL_BLOCKS = BlockStyle(
     notch_p=0.4,
     court_p=0.35,
     core_hall_p=0.3,
+    corridor_scale=0.8,
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

@@ -1,0 +1,154 @@
+"""How real do generated offices and schools look, on real plans held out of the model's fit?
+
+For each type, the shared real plans are split into k folds (seeded). For each fold, a
+building-type model is fitted (:func:`~realistic_indoor.models.fit_model`) to the other folds'
+plans and one twin (same floor area) is generated for each held-out plan with that model and
+the chosen layout. Every plan thus has a twin whose model never saw it. The report sets the
+real plans beside their twins: building-level measures (median and interquartile range), the
+two-sample classifier (building-level, room-level and all features), and the Table-1 realism
+score against the paper of the real plans and of the twins.
+
+Usage::
+
+    .venv/bin/python experiments/layout_realism.py --out experiments/results/layout_realism
+    .venv/bin/python experiments/layout_realism.py --layout wings --out runs/layout_realism_wings
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from realistic_indoor.files import write_text
+from realistic_indoor.generator import generate_like
+from realistic_indoor.io import load
+from realistic_indoor.models import fit_model
+from realistic_indoor.validator.building_measures import building_measures
+from realistic_indoor.validator.reference import paper_reference
+from realistic_indoor.validator.score import realism_score
+from realistic_indoor.validator.two_sample import two_sample_test
+
+ROOT = Path(__file__).resolve().parents[1]
+PLANS = ROOT.parent / "shared" / "data" / "real_floorplans"
+MEASURES = (
+    "footprint_fill",
+    "isoperimetric_quotient",
+    "aspect_ratio",
+    "circulation_share",
+    "rooms_per_hectare",
+    "door_depth_norm",
+    "one_door_share",
+    "circulation_loops",
+    "core_facade_share",
+)
+TARGETS = ("footprint_fill", "circulation_share", "rooms_per_hectare", "door_depth_norm")
+"""Measures whose twin median must lie in the real plans' interquartile range (issue 12)."""
+
+
+def held_out_twins(plans: list[tuple[str, object]], kind: str, folds: int, seed: int, **options) -> list:
+    """One twin per plan, each from a model fitted to the plans of the other folds."""
+    order = np.random.default_rng(seed).permutation(len(plans))
+    fold_of = {int(i): k % folds for k, i in enumerate(order)}
+    twins: list = [None] * len(plans)
+    for k in range(folds):
+        train = [b for i, (_, b) in enumerate(plans) if fold_of[i] != k]
+        test = [i for i in range(len(plans)) if fold_of[i] == k]
+        model = fit_model(train, name=kind)
+        made = generate_like([plans[i] for i in test], kind, seed=seed + 1000 * k, model=model, **options)
+        for i, twin in zip(test, made, strict=True):
+            twins[i] = twin.building
+    return twins
+
+
+def _quartiles(values: list[float]) -> list[float]:
+    return [float(v) for v in np.nanpercentile(values, [25, 50, 75])]
+
+
+def compare(real: list, twins: list, kind: str) -> dict:
+    """Measures, classifier accuracies and Table-1 scores of the real plans and their twins."""
+    mr = [building_measures(b) for b in real]
+    mt = [building_measures(b) for b in twins]
+    measures = {}
+    for name in MEASURES:
+        q_real = _quartiles([getattr(m, name) for m in mr])
+        q_twin = _quartiles([getattr(m, name) for m in mt])
+        measures[name] = {"real": q_real, "twins": q_twin, "inside": q_real[0] <= q_twin[1] <= q_real[2]}
+    classifier = {}
+    for features in ("building", "room", "all"):
+        r = two_sample_test(real, twins, names=("real", "twins"), features=features)
+        classifier[features] = {"accuracy": r.accuracy, "std": r.accuracy_std}
+    reference = paper_reference(kind)
+    scores = {
+        "real": realism_score(real, reference).overall,
+        "twins": realism_score(twins, reference).overall,
+    }
+    return {"plans": len(real), "measures": measures, "classifier": classifier, "paper_score": scores}
+
+
+def report(results: dict, args: argparse.Namespace) -> str:
+    """The Markdown report."""
+    lines = [
+        "# Generated twins of real plans held out of the fit",
+        "",
+        f"Regenerate with `.venv/bin/python experiments/layout_realism.py --layout {args.layout} "
+        f"--folds {args.folds} --seed {args.seed} --out {args.out}`.",
+        "",
+        f"Layout `{args.layout}`; models fitted on {args.folds - 1} of {args.folds} folds of the shared "
+        "real plans, one twin (same floor area) per plan of the held-out fold. Medians with "
+        "interquartile ranges; *in* marks a twin median inside the real plans' interquartile range.",
+        "",
+    ]
+    for kind, r in results.items():
+        lines += [f"## {kind.capitalize()}s ({r['plans']} plans)", "", "| measure | real | twins | |", "|---|---|---|---|"]
+        for name, m in r["measures"].items():
+            lo, med, hi = m["real"]
+            t = m["twins"]
+            lines.append(
+                f"| {name.replace('_', ' ')} | {med:.2f} [{lo:.2f}-{hi:.2f}] | {t[1]:.2f} [{t[0]:.2f}-{t[2]:.2f}] | "
+                f"{'in' if m['inside'] else 'out'} |"
+            )
+        lines += ["", "| classifier features | balanced accuracy (0.5 = indistinguishable) |", "|---|---|"]
+        for features, c in r["classifier"].items():
+            lines.append(f"| {features} | {c['accuracy']:.2f} ± {c['std']:.2f} |")
+        s = r["paper_score"]
+        lines += [
+            "",
+            f"Table-1 realism score against the paper's {kind}s: real plans {s['real']:.2f}, "
+            f"twins {s['twins']:.2f} (0 = identical).",
+            "",
+        ]
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Run the comparison and write ``layout_realism.md`` and ``layout_realism.json``."""
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--types", default="office,school", help="building types (default office,school)")
+    p.add_argument("--layout", default="blocks", choices=("blocks", "wings"), help="layout of the twins")
+    p.add_argument("--folds", type=int, default=5, help="folds of the cross-validation (default 5)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the split and the twins (default 0)")
+    p.add_argument("--plans", type=Path, default=PLANS, help="folder with one sub-folder of plans per type")
+    p.add_argument("--out", type=Path, default=Path("runs/layout_realism"), help="output folder")
+    args = p.parse_args(argv)
+    results = {}
+    for kind in args.types.split(","):
+        files = sorted((args.plans / kind).glob("*.xml"))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            plans = [(f.stem, load(f)) for f in files]
+            twins = held_out_twins(plans, kind, args.folds, args.seed, layout=args.layout)
+            results[kind] = compare([b for _, b in plans], twins, kind)
+        print(f"{kind}: {len(plans)} plans done")
+    args.out.mkdir(parents=True, exist_ok=True)
+    write_text(args.out / "layout_realism.json", json.dumps(results, indent=1) + "\n")
+    text = report(results, args)
+    write_text(args.out / "layout_realism.md", text + "\n")
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

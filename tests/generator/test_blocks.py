@@ -1,0 +1,84 @@
+"""The block layout: compact footprints, strips that tile the block, the options that choose it."""
+
+import numpy as np
+import pytest
+from shapely.geometry import box
+from shapely.ops import unary_union
+
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.generator import make_generator
+from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS
+from realistic_indoor.generator.blocks.paint import paint_block
+from realistic_indoor.generator.blocks.section import Hall, Section, draw_section
+from realistic_indoor.generator.wings.sizing import Dims
+from realistic_indoor.validator.building_measures import building_measures
+
+
+def _rects(regions):
+    return regions.corridors + [r for _, rs in regions.halls for r in rs] + [b.rect for b in regions.bays]
+
+
+def test_paint__a_single_bar_is_a_corridor_between_two_strips():
+    # 60 m long, strips 6 m and 5 m deep, corridor 2 m: 13 m deep, 780 m2, corridor 120 m2
+    s = Section(((60, 50),), 20, 0, (), (), (), ())
+    r = paint_block(s, 600)
+    assert r.corridors == [(0, 60, 600, 80)]
+    assert sorted(b.rect for b in r.bays) == [(0, 0, 600, 60), (0, 80, 600, 130)]
+    assert r.area == 600 * 130
+
+
+def test_paint__two_bars_make_a_ring_around_a_core():
+    # bars (6, 7) and (7, 6) m, corridor 2 m: 30 m deep; 50 m long with 6 m end strips
+    s = Section(((60, 70), (70, 60)), 20, 60, (), (), (), ())
+    r = paint_block(s, 500)
+    assert (60, 60, 440, 80) in r.corridors and (60, 220, 440, 240) in r.corridors
+    assert (60, 80, 80, 220) in r.corridors and (420, 80, 440, 220) in r.corridors
+    union = unary_union([box(*x) for x in _rects(r)])
+    assert union.area == pytest.approx(500 * 300)
+    assert union.geom_type == "Polygon" and not union.interiors
+
+
+def test_paint__a_hall_across_the_core_joins_both_corridors():
+    s = Section(((60, 70), (70, 60)), 20, 60, (), (Hall(0, 0.5, 100 * 140),), (), ())
+    r = paint_block(s, 500)
+    [(_, [hall])] = r.halls
+    assert hall[1] == 80 and hall[3] == 220  # from corridor 0's side to corridor 1's
+    assert hall[2] - hall[0] == 100  # 140 m2 over a 14 m deep core: 10 m wide
+
+
+def test_paint__blocks_drawn_for_many_areas_tile_without_overlap_or_void():
+    for seed in range(300):
+        rng = np.random.default_rng(seed)
+        style = SCHOOL_BLOCKS if seed % 2 else OFFICE_BLOCKS
+        dims = Dims(int(rng.integers(20, 35)), int(rng.integers(50, 90)), 30, 7000)
+        section, length = draw_section(rng, int(rng.uniform(300, 8000) * 100), dims, style, 4, 7000)
+        r = paint_block(section, length)
+        shapes = [box(*x) for x in _rects(r)]
+        union = unary_union(shapes + [box(*h) for h in r.holes])
+        assert sum(p.area for p in shapes) == pytest.approx(unary_union(shapes).area), seed
+        assert union.geom_type == "Polygon" and not union.interiors, seed
+
+
+@pytest.mark.parametrize("kind", ["office", "school"])
+def test_blocks__footprints_are_compact(kind, samples):
+    fills = [building_measures(b).footprint_fill for b in samples(kind)[:40]]
+    assert np.median(fills) >= 0.8
+
+
+@pytest.mark.parametrize("kind", ["office", "school"])
+def test_blocks__less_than_two_fifths_of_the_floor_is_circulation(kind, samples):
+    shares = [building_measures(b).circulation_share for b in samples(kind)[:40]]
+    assert np.median(shares) <= 0.4
+
+
+def test_blocks__the_papers_model_keeps_the_wing_layout():
+    b = make_generator("office", 2000, model="paper")(np.random.default_rng(0))
+    assert b.metadata["shape"] in {"bar", "L", "T", "cross", "U", "H", "E", "comb", "court", "deep", "grid"}
+    assert b.metadata["params"]["model"] == "office"
+
+
+def test_blocks__layout_and_model_names_are_checked():
+    with pytest.raises(ConfigError, match="unknown layout 'maze'; valid: blocks, wings"):
+        make_generator("office", layout="maze")
+    with pytest.raises(ConfigError, match="unknown model 'tabel'"):
+        make_generator("school", model="tabel")

@@ -22,6 +22,7 @@ import numpy as np
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import write_bytes, write_text
+from realistic_indoor.sim.raster import DEFAULT_WALL_THICKNESS_M  # as the simulator and ROS map draw walls
 
 if TYPE_CHECKING:
     from realistic_indoor.building import Building, Door, Room
@@ -45,8 +46,6 @@ __all__ = [
 ]
 
 DEFAULT_WALL_HEIGHT_M = 2.5
-DEFAULT_WALL_THICKNESS_M = 0.1
-"""The thickness the simulator's raster and the ROS map give walls, so all exports agree."""
 DEFAULT_DOOR_HEIGHT_M = 2.1
 
 

@@ -62,21 +62,31 @@ def test_glb__container_accessors_and_names(tiny_office, tmp_path):
     assert a["extras"] == {"room_id": "a", "function": "office", "label": "medium", "area_m2": 20.0}
 
 
-trimesh = pytest.importorskip("trimesh", reason="trimesh is in the sim3d extra: pip install -e '.[sim3d]'")
+@pytest.fixture(scope="module")
+def load_mesh():
+    """``load_mesh(path)``: the file as trimesh reads it, ``({name: geometry}, scene)``.
 
+    One geometry per OBJ object, vertices kept as written (not merged).
+    """
+    trimesh = pytest.importorskip(
+        "trimesh", reason="trimesh is in the sim3d extra: pip install -e '.[sim3d]'"
+    )
 
-def _load(path):
-    """The file as trimesh reads it, one geometry per OBJ object, vertices kept as written."""
-    scene = trimesh.load_scene(path, process=False, split_objects=True)
-    return dict(scene.geometry), scene
+    def load(path):
+        scene = trimesh.load_scene(path, process=False, split_objects=True)
+        return dict(scene.geometry), scene
+
+    return load
 
 
 @pytest.mark.parametrize("ending", ["glb", "obj"])
 @pytest.mark.parametrize("plan", ["office", "slanted", "tiny_office"])
-def test_mesh__each_wall_box_closed_and_floor_area_is_the_buildings(plan, ending, request, tmp_path):
+def test_mesh__each_wall_box_closed_and_floor_area_is_the_buildings(
+    plan, ending, request, tmp_path, load_mesh
+):
     b = request.getfixturevalue(plan)
     save(b, tmp_path / f"m.{ending}", exterior_doors_open=False)
-    geometry, scene = _load(tmp_path / f"m.{ending}")
+    geometry, scene = load_mesh(tmp_path / f"m.{ending}")
     boxes = building_boxes(b, WorldOptions(exterior_doors_open=False))
     for group, kind in (("walls", "wall"), ("lintels", "lintel"), ("doors", "door")):
         expected = [x for x in boxes if x.kind == kind]
@@ -92,36 +102,37 @@ def test_mesh__each_wall_box_closed_and_floor_area_is_the_buildings(plan, ending
     assert scene.bounds[:, 1] == pytest.approx([0.0, 2.5], abs=1e-5)  # y up: floor at 0, walls to 2.5 m
 
 
-def test_glb__room_labels_are_node_names(office, tmp_path):
+def test_glb__room_labels_are_node_names(office, tmp_path, load_mesh):
     save(office, tmp_path / "o.glb")
-    _geometry, scene = _load(tmp_path / "o.glb")
+    _geometry, scene = load_mesh(tmp_path / "o.glb")
     for room in office.rooms:
         assert f"room {room.id}: {room.function} ({room.label.value})" in scene.graph.nodes
     assert "robot_start" in scene.graph.nodes
 
 
-def test_glb__plan_frame_under_the_y_up_turn(tiny_office, tmp_path):
+def test_glb__plan_frame_under_the_y_up_turn(tiny_office, tmp_path, load_mesh):
     """A plan point (x, y) at height z is (x, z, -y) in glTF's y-up world, as in the .obj."""
     save(tiny_office, tmp_path / "t.glb")
     save(tiny_office, tmp_path / "t.obj")
-    _geometry, glb = _load(tmp_path / "t.glb")
-    _geometry, obj = _load(tmp_path / "t.obj")
+    _geometry, glb = load_mesh(tmp_path / "t.glb")
+    _geometry, obj = load_mesh(tmp_path / "t.obj")
     expected = [[-0.05, 0.0, -6.05], [10.05, 2.5, 0.05]]  # x 0..10, y 0..6, walls' caps 0.05 m beyond
     assert glb.bounds == pytest.approx(np.array(expected), abs=1e-5)
     assert obj.bounds == pytest.approx(np.array(expected), abs=1e-5)
 
 
-def test_mesh__every_shared_real_plan(real_plans_dir, tmp_path):
+@pytest.mark.slow
+def test_mesh__every_shared_real_plan(real_plans_dir, tmp_path, load_mesh):
     from realistic_indoor.io import load
 
     for plan in sorted(real_plans_dir.glob("*/*.xml")):
         b = load(plan)
         save(b, tmp_path / "real.glb")
-        geometry, _scene = _load(tmp_path / "real.glb")
+        geometry, _scene = load_mesh(tmp_path / "real.glb")
         parts = geometry["walls"].split(only_watertight=False)
         assert len(parts) == len(b.walls) and all(p.is_watertight for p in parts), plan.name
         floors = sum(g.area for name, g in geometry.items() if name.startswith("floor"))
         assert floors == pytest.approx(b.area, rel=1e-5), plan.name
         save(b, tmp_path / "real.obj")
-        geometry, _scene = _load(tmp_path / "real.obj")
+        geometry, _scene = load_mesh(tmp_path / "real.obj")
         assert len(geometry["walls"].split(only_watertight=False)) == len(b.walls), plan.name

@@ -138,6 +138,7 @@ def test_mujoco__compiles_every_generated_type(kind, tmp_path):
     assert model.ngeom == 1 + len(building_boxes(b, WorldOptions(exterior_doors_open=False)))
 
 
+@pytest.mark.slow
 def test_mujoco__compiles_every_shared_real_plan(real_plans_dir, tmp_path):
     from realistic_indoor.io import load
 

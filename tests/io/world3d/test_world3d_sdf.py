@@ -156,6 +156,7 @@ def test_sdformat__loads_real_plans(name, real_plans_dir, sdformat_loader, tmp_p
     assert "robot_start" in frames
 
 
+@pytest.mark.slow
 def test_sdf__every_shared_real_plan_gives_its_walls(real_plans_dir, tmp_path, box_segments):
     from realistic_indoor.io import load
 

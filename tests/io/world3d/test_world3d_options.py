@@ -10,6 +10,7 @@ import pytest
 
 import realistic_indoor as ri
 from realistic_indoor import files
+from realistic_indoor.building import Building, Room
 from realistic_indoor.errors import ConfigError, PlanFormatError, RealisticIndoorError
 from realistic_indoor.io import format_of, load, save
 from realistic_indoor.io.world3d import WorldOptions, building_boxes
@@ -177,3 +178,13 @@ def test_save__every_generated_type_exports(kind, tmp_path):
     for ending in ENDINGS:
         (path,) = save(b, tmp_path / f"{kind}.{ending}")
         assert path.stat().st_size > 1000
+
+
+@pytest.mark.parametrize("ending", ENDINGS)
+def test_save__no_start_pose_where_the_robot_fits_nowhere(tmp_path, ending):
+    closet = Building("house", (Room.rectangle("c", "small", "closet", (0, 0, 0.6, 0.6)),), (), {})
+    (path,) = save(closet, tmp_path / f"closet.{ending}")
+    data = path.read_bytes()
+    assert b"robot_start" not in data
+    if ending in ("sdf", "world", "mjcf.xml"):
+        assert b"no robot start: no free floor is clear enough of walls" in data

@@ -42,7 +42,7 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
         raise ConfigError(f"--count must be at least 1, not {count}")
     out = check_output_dir(args.out_dir, "--out-dir")
     ext = "." + args.format.lstrip(".")
-    options = save_options(args, f"x{ext}")
+    written_as = save_options(args, f"x{ext}")
     files = plan_files(args.like)
     if not files:
         raise ConfigError(f"--like {args.like}: no plans there (plans end in .json or .xml)")
@@ -51,7 +51,7 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
     twins = generate_like(plans, args.type, count, args.seed or 0, **options)
     written = clamped = 0
     for twin in tqdm(twins, desc=f"{args.type} twins", unit="building", disable=not show_progress()):
-        save(twin.building, out / f"{twin.name}{ext}", **options)
+        save(twin.building, out / f"{twin.name}{ext}", **written_as)
         written += 1
         if twin.clamped:
             clamped += 1

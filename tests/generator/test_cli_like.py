@@ -59,3 +59,12 @@ def test_generate_like__folder_without_plans_is_an_error(tmp_path, capsys):
     (tmp_path / "empty").mkdir()
     assert main(["generate", "--like", str(tmp_path / "empty"), "--out-dir", str(tmp_path / "o")]) == 1
     assert "no plans there" in capsys.readouterr().err
+
+
+def test_generate_like__model_and_layout_reach_the_generator(plans, tmp_path):
+    out = tmp_path / "paper"
+    args = ["generate", "--type", "office", "--like", str(plans), "--out-dir", str(out), "--model", "paper"]
+    assert main(args) == 0
+    twin = ri.load(out / "small.json")
+    assert twin.metadata["params"]["model"] == "office"  # the paper's model is named in the metadata
+    assert not twin.metadata["shape"].startswith(("double-loaded", "ring"))  # the wing layout's shapes

@@ -37,7 +37,7 @@ def test_generate_like__several_twins_per_plan_differ_and_repeat_per_seed():
 
 
 def test_generate_like__area_outside_the_limits_is_clamped_and_said():
-    low, high = area_limits("house")
+    low, _high = area_limits("house")
     (twin,) = generate_like([("tiny", _plan(5, 5))], "house")  # 25 m2, under the smallest house
     assert twin.clamped and twin.plan_area_m2 == 25.0
     assert twin.building.area == pytest.approx(low, rel=0.05)

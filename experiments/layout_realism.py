@@ -103,7 +103,12 @@ def report(results: dict, args: argparse.Namespace) -> str:
         "",
     ]
     for kind, r in results.items():
-        lines += [f"## {kind.capitalize()}s ({r['plans']} plans)", "", "| measure | real | twins | |", "|---|---|---|---|"]
+        lines += [
+            f"## {kind.capitalize()}s ({r['plans']} plans)",
+            "",
+            "| measure | real | twins | |",
+            "|---|---|---|---|",
+        ]
         for name, m in r["measures"].items():
             lo, med, hi = m["real"]
             t = m["twins"]

@@ -11,7 +11,7 @@ from realistic_indoor.io.floorplan.repairs import PlanRepairWarning
 def _repairs() -> int:
     for plan, count in (("a.xml", 2), ("b.xml", 3), ("c.xml", 1)):
         for i in range(count):
-            warnings.warn(f"{plan}: space id=\"{i}\": cut the overlap", PlanRepairWarning, stacklevel=1)
+            warnings.warn(f'{plan}: space id="{i}": cut the overlap', PlanRepairWarning, stacklevel=1)
     warnings.warn("something else", UserWarning, stacklevel=1)
     return 0
 

@@ -50,7 +50,5 @@ def test_repository__gitignore_ignores_venv_folder_and_link(tmp_path):
     if shutil.which("git") is None:
         pytest.skip("git is not installed")
     for name in (".venv", ".venv/pyvenv.cfg", "runs/x.json"):
-        out = subprocess.run(
-            ["git", "check-ignore", "--no-index", "-q", name], cwd=ROOT, capture_output=True
-        )
+        out = subprocess.run(["git", "check-ignore", "--no-index", "-q", name], cwd=ROOT, capture_output=True)
         assert out.returncode == 0, f"{name} is not ignored"

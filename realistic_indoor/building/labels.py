@@ -6,7 +6,14 @@ from enum import Enum
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["CIRCULATION_LABELS", "ROOM_LABELS", "BuildingType", "SemanticLabel", "parse_building_type", "parse_label"]
+__all__ = [
+    "CIRCULATION_LABELS",
+    "ROOM_LABELS",
+    "BuildingType",
+    "SemanticLabel",
+    "parse_building_type",
+    "parse_label",
+]
 
 
 class SemanticLabel(str, Enum):

@@ -84,7 +84,9 @@ def _options(args: argparse.Namespace) -> dict:
         options["model"] = args.model if named else _read_model(Path(args.model))
     if getattr(args, "layout", None):
         if args.type not in ("office", "school"):
-            raise ConfigError(f"--layout chooses how offices and schools are laid out, not --type {args.type}")
+            raise ConfigError(
+                f"--layout chooses how offices and schools are laid out, not --type {args.type}"
+            )
         options["layout"] = args.layout
     return options
 

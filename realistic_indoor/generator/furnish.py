@@ -45,11 +45,13 @@ def rooms_from_regions(
     style: WingStyle,
     dims: Dims,
     hall_rooms: bool = True,
+    corridor_cuts: float | None = None,
 ) -> Plan:
     """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions.
 
     With ``hall_rooms``, large halls get a strip of rooms along a side (see
-    :func:`~realistic_indoor.generator.wings.halls.carve_hall_bays`).
+    :func:`~realistic_indoor.generator.wings.halls.carve_hall_bays`); ``corridor_cuts``
+    overrides the style's share of corridor segments to cut.
     """
     if hall_rooms:
         carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
@@ -65,7 +67,8 @@ def rooms_from_regions(
         subdivide(plan, regions.bays[int(k)], rng, ctx)
     for rect in regions.ends:
         plan.add(PlanRoom([rect], S, role="end"))
-    _corridors(plan, regions, model, rng, dims, style)
+    cuts = style.corridor_cuts if corridor_cuts is None else corridor_cuts
+    _corridors(plan, regions, model, rng, dims, cuts)
     return plan
 
 
@@ -152,16 +155,16 @@ def _corridors(
     model: BuildingTypeModel,
     rng: np.random.Generator,
     dims: Dims,
-    style: WingStyle,
+    corridor_cuts: float,
 ) -> None:
     """Cut the corridor lines into segments, as many as the model's corridor share asks for.
 
-    The count is scaled by ``style.corridor_cuts``; stubs of service cores count as corridors.
+    The count is scaled by ``corridor_cuts``; stubs of service cores count as corridors.
     """
     p = model.shares()
     others = sum(1 for r in plan.rooms if r.label is not C)
     stubs = sum(1 for r in plan.rooms if r.label is C)
-    want = round(style.corridor_cuts * p[C] / max(1 - p[C], 1e-6) * others) - stubs
+    want = round(corridor_cuts * p[C] / max(1 - p[C], 1e-6) * others) - stubs
     junctions: list[Rect] = [r for _, rects in regions.halls for r in rects] + regions.corridors
     min_len = max(4 * dims.corridor, to_units(6.0))
     fronts = corridor_fronts(plan, regions.corridors)

@@ -71,7 +71,9 @@ def _lay_out(
     n_halls = int(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area() + rng.random())
     section, length = draw_section(rng, area, dims, blocks, n_halls, model.stats(H).area_mean * 100)
     regions = paint_block(section, _length_for(section, length, area))
-    plan = rooms_from_regions(regions, rng, model, style, dims, hall_rooms=False)
+    plan = rooms_from_regions(
+        regions, rng, model, style, dims, hall_rooms=False, corridor_cuts=blocks.corridor_cuts
+    )
     if annex_m2 and add_annex(plan, rng, style, annex_m2) < 0:
         return None
     return plan, section

@@ -30,6 +30,9 @@ class BlockStyle:
             it (else it takes one strip and opens onto one corridor).
         corridor_scale: Corridor width over the width the wing layout would use.
         doors_per_room: Most further doors one room gets (see ``connect_rooms``).
+        corridor_cuts: How many corridor segments to cut, as a share of the number the model's
+            corridor share asks for (real plans divide corridors at doors, width changes and
+            fire doors: their segments are short, axes ratio about 4 in offices).
     """
 
     aspect: tuple[float, float]
@@ -45,6 +48,7 @@ class BlockStyle:
     through_hall_p: float = 0.3
     corridor_scale: float = 1.0
     doors_per_room: int = 3
+    corridor_cuts: float = 1.5
 
 
 OFFICE_BLOCKS = BlockStyle(

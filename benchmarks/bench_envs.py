@@ -1,14 +1,20 @@
 """Benchmark of the Gymnasium environments on one core: prints Markdown tables.
 
-Measures, in one process with random actions:
+Measures, in one process with random actions, after ``CartPole-v1`` (``gym.make``, random
+actions, the same loop) as the yardstick: every rate is also given as a ratio to CartPole-v1's
+steps/s measured in the same run, and every reset in CartPole steps, so that figures from
+different machines compare (the header names the CPU model, its cores and the load):
 
 1. every registered id with its default config (``gym.make(id)``, all wrappers): steps per
-   second (stepping only: the best of five blocks; and including the resets, from the median
+   second (stepping only: the median of five blocks; and including the resets, from the median
    reset time and the mean length of the random-action episodes), the median time of a reset
    that draws a new building (generation, world build, victims) and of the world build alone,
    and memory per environment;
 2. how these grow with the building's area: ``OfficeExplore-v0`` with ``area_m2`` from 250 to
-   4,000 m2 (or, with ``--source plans``, fixed real plans of growing size).
+   4,000 m2 (or, with ``--source plans``, fixed real plans of growing size);
+3. a reset of ``OfficeExplore-v0`` with a new default office, split into generating the
+   building and building its world (raster, distance transform, reachable floor, physics, map),
+   side by side in one run.
 
 Times are CPU seconds of the benchmark's process (``time.process_time``), so that other jobs on
 a shared machine do not count; on a quiet machine wall clock agrees. Memory per environment is
@@ -25,12 +31,15 @@ from __future__ import annotations
 
 import argparse
 import gc
+import os
+import platform
 import statistics
 import time
 import tracemalloc
 from pathlib import Path
 
 import gymnasium as gym
+import numpy as np
 from bench_sim import PLAN_FILES, PLANS  # the simulator benchmark's plans, spanning sizes
 
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
@@ -38,6 +47,7 @@ from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.simulation import Simulation
 
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
+YARDSTICK = "CartPole-v1"
 MEMORY_ENVS = 8
 BLOCKS = 5
 
@@ -50,6 +60,12 @@ def main(argv: list[str] | None = None) -> None:
     """Run the benchmark and print its tables."""
     args = _parse(argv)
     print(f"# Environment benchmark ({'quick' if args.quick else 'full'}; one process, one core)\n")
+    print(f"Machine: {machine()}\n")
+    args.yardstick = step_rate(YARDSTICK, {}, args)[0]
+    print(
+        f"Yardstick: {YARDSTICK} (gym.make, random actions, the same loop) steps at "
+        f"{args.yardstick:,.0f} steps/s; ratios below are to this.\n"
+    )
     if args.source == "generator":
         _table(
             "Registered environments, default config",
@@ -58,7 +74,9 @@ def main(argv: list[str] | None = None) -> None:
             args,
         )
         rows = [(f"{a} m2", "OfficeExplore-v0", {"area_m2": float(a)}) for a in AREAS_M2]
-        _table("Growth with area: OfficeExplore-v0, area_m2 asked of the generator", "area", rows, args)
+        if not args.skip_growth:
+            _table("Growth with area: OfficeExplore-v0, area_m2 asked of the generator", "area", rows, args)
+        _reset_split_table("OfficeExplore-v0", args)
     else:
         from realistic_indoor.io import load
 
@@ -77,6 +95,7 @@ def _parse(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument("--plans-dir", type=Path, default=PLANS, help="folder of the real floor plans")
     p.add_argument("--ids", nargs="+", default=sorted(PRESETS), help="registered ids to measure")
     p.add_argument("--quick", action="store_true", help="fewer steps and resets")
+    p.add_argument("--skip-growth", action="store_true", help="leave out the growth-with-area table")
     p.add_argument("--seed", type=int, default=0)
     args = p.parse_args(argv)
     args.steps = 5_000 if args.quick else 20_000
@@ -84,30 +103,78 @@ def _parse(argv: list[str] | None) -> argparse.Namespace:
     return args
 
 
+def machine() -> str:
+    """CPU model, logical cores and the load average: what the absolute figures depend on."""
+    model = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    load = ", ".join(f"{x:.1f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
+    return f"{model}, {os.cpu_count()} logical cores, load average {load} (1, 5, 15 min)"
+
+
 def _table(title: str, key: str, rows: list[tuple[str, str, dict]], args: argparse.Namespace) -> None:
     print(f"## {title}\n")
     print(
-        f"| {key} | area m2 | steps/s | steps/s incl. resets | episode steps | reset ms | world build ms "
-        "| world + map MB | memory per env MB |"
+        f"| {key} | area m2 | steps/s | x {YARDSTICK} | steps/s incl. resets | x {YARDSTICK} "
+        "| episode steps | reset ms | reset in CartPole steps | world build ms | world + map MB "
+        "| memory per env MB |"
     )
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    ys = args.yardstick
     for label, env_id, kwargs in rows:
-        rate, episode_steps = _step_rate(env_id, kwargs, args)
+        rate, episode_steps = step_rate(env_id, kwargs, args)
         reset_ms, build_ms, area, nbytes = _reset_cost(env_id, kwargs, args)
         with_resets = 1.0 / (1.0 / rate + reset_ms / 1e3 / episode_steps)
         memory = _memory_per_env(env_id, kwargs, args.seed)
         print(
-            f"| {label} | {area:,.0f} | {rate:,.0f} | {with_resets:,.0f} | {episode_steps:,.0f} | {reset_ms:.1f} "
-            f"| {build_ms:.1f} | {nbytes / 1e6:.1f} | {memory:.1f} |"
+            f"| {label} | {area:,.0f} | {rate:,.0f} | {rate / ys:.3f} | {with_resets:,.0f} | {with_resets / ys:.3f} "
+            f"| {episode_steps:,.0f} | {reset_ms:.1f} | {reset_ms / 1e3 * ys:,.0f} | {build_ms:.1f} "
+            f"| {nbytes / 1e6:.1f} | {memory:.1f} |"
         )
     print()
 
 
-def _step_rate(env_id: str, kwargs: dict, args: argparse.Namespace) -> tuple[float, float]:
+def _reset_split_table(env_id: str, args: argparse.Namespace) -> None:
+    """Median time to generate a new building and to build its world, side by side (ms)."""
+    from realistic_indoor.envs.source import building_source
+
+    env = gym.make(env_id)
+    config = env.unwrapped.config
+    env.close()
+    generate = building_source(config)
+    generate(np.random.default_rng(args.seed))  # warm the kernels and caches
+    gen_ms, build_ms, areas = [], [], []
+    for i in range(args.resets):
+        rng = np.random.default_rng(args.seed + 1 + i)
+        start = _clock()
+        building = generate(rng)
+        gen_ms.append(1e3 * (_clock() - start))
+        sim = Simulation(config)
+        start = _clock()
+        sim.load(building)
+        build_ms.append(1e3 * (_clock() - start))
+        areas.append(building.area)
+    gen, build = statistics.median(gen_ms), statistics.median(build_ms)
+    ys = args.yardstick
+    print(f"## Reset of {env_id} with a new default building: generation and world build\n")
+    print(f"Median of {args.resets} seeds; mean floor area {statistics.mean(areas):,.0f} m2.\n")
+    print("| part | ms | in CartPole steps |")
+    print("|---|---:|---:|")
+    for name, ms in (("generation", gen), ("world build", build), ("total", gen + build)):
+        print(f"| {name} | {ms:.1f} | {ms / 1e3 * ys:,.0f} |")
+    print()
+
+
+def step_rate(env_id: str, kwargs: dict, args: argparse.Namespace) -> tuple[float, float]:
     """Steps per second with random actions (resets not timed), and the mean episode length.
 
-    The steps run in five blocks; the rate is the best block's, as ``timeit`` reports the
-    best repeat: other processes on a shared machine only ever slow a block down.
+    The steps run in five blocks; the rate is the median block's (each block's time less its
+    resets, timed apart). The same loop measures the yardstick, CartPole-v1.
     """
     env = gym.make(env_id, **kwargs)
     env.action_space.seed(args.seed)
@@ -119,22 +186,23 @@ def _step_rate(env_id: str, kwargs: dict, args: argparse.Namespace) -> tuple[flo
             env.reset()
     env.reset()
     block = len(actions) // BLOCKS
-    best, lengths, length = float("inf"), [], 0
+    times, lengths, length = [], [], 0
     for k in range(BLOCKS):
-        stepping = 0.0
+        resetting = 0.0
+        start = _clock()
         for a in actions[k * block : (k + 1) * block]:
-            t = _clock()
             _, _, terminated, truncated, _ = env.step(a)
-            stepping += _clock() - t
             length += 1
             if terminated or truncated:
                 lengths.append(length)
                 length = 0
+                t = _clock()
                 env.reset()
-        best = min(best, stepping)
-    max_steps = env.unwrapped.config.max_steps
+                resetting += _clock() - t
+        times.append(_clock() - start - resetting)
+    max_steps = env.spec.max_episode_steps or args.steps
     env.close()
-    return block / best, (statistics.mean(lengths) if lengths else max_steps)
+    return block / statistics.median(times), (statistics.mean(lengths) if lengths else max_steps)
 
 
 def _reset_cost(env_id: str, kwargs: dict, args: argparse.Namespace) -> tuple[float, float, float, int]:

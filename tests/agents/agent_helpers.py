@@ -41,6 +41,30 @@ def hall_and_corridor(n_rooms: int = 3) -> Building:
     return Building("office", tuple(rooms), tuple(doors), {"generator": "hand-made"})
 
 
+def empty_room(side_m: float) -> Building:
+    """A square room ``side_m`` across without doors: the robot starts in its middle."""
+    return Building("office", (Room.rectangle("r", "big", "open space", (0, 0, side_m, side_m)),))
+
+
+def vestibule() -> Building:
+    """A 4 m x 4 m entrance vestibule whose only way on is a 0.9 m door by its north-east corner.
+
+    The entrance (1.2 m) is in the middle of the vestibule's south wall, the door at x = 3.35 m
+    in its north wall leads into a 12 m x 8 m room. Keeping the wall on its right, a robot
+    goes round the vestibule anticlockwise and turns the north-east corner just as it passes
+    the door, as in the small entrance rooms of several shared real plans.
+    """
+    rooms = (
+        Room.rectangle("v", "hall", "entrance", (0.0, 0.0, 4.0, 4.0)),
+        Room.rectangle("r", "big", "open space", (-4.0, 4.0, 8.0, 12.0)),
+    )
+    doors = (
+        Door("entrance", "v", None, 2.0, 0.0, 1.2, 0.0),
+        Door("d", "v", "r", 3.35, 4.0, 0.9, 0.0),
+    )
+    return Building("office", rooms, doors)
+
+
 class HallOffices:
     """A generator of :func:`hall_and_corridor` buildings with 2 to 4 rooms a side (picklable)."""
 

@@ -84,11 +84,15 @@ class ExploreEnv(gym.Env):
     1. Just inside an entrance (a door to the outside), facing inward: on the door's centre
        line, at the first depth from 0.3 m (in 5 cm steps, up to 3 m) that is
        ``world.start_clearance_m`` (0.4 m) clear of walls. Entrances are tried in the plan's
-       order; the first with such a point wins.
-    2. Without one (real plans often have no exterior door), in the largest hall, else in the
-       largest room: at its centroid, or if that is not clear of walls, at the point
-       farthest from its walls; facing +x (heading 0).
+       order, those of the building's main part first; the first with such a point wins.
+    2. Without one (real plans often have no exterior door), in the largest hall of the main
+       part, else in its largest room: at its centroid, or if that is not clear of walls, at
+       the point farthest from its walls; facing +x (heading 0).
     3. Failing both, on the free cell farthest from any wall, facing +x.
+
+    The main part is the set of rooms joined by doors that holds the most floor
+    (:meth:`~realistic_indoor.sim.world.World.main_part`): a real plan may have rooms no door
+    reaches, or separate flats.
 
     ## Episode End
 

@@ -121,17 +121,32 @@ class World:
         door's centre line, at the first distance (from 0.3 m on) that is ``start_clearance_m``
         clear of walls. Without one (real plans often have none), it is the point of the largest
         hall (else the largest room): its centroid, or if that is not clear of walls, the point
-        farthest from its walls; facing +x. If neither fits, the
-        free cell farthest from any wall.
+        farthest from its walls; facing +x. If neither fits, the free cell farthest from any
+        wall.
+
+        Entrances, halls and rooms of the building's main part come first: the rooms joined by
+        doors that hold the most floor together. A plan may have rooms that no door reaches (a
+        space whose portals the file lacks) or separate parts (two flats of one floor); starting
+        there, a robot would explore only that piece.
         """
-        for door in self.building.entrances:
+        main = self.main_part()
+        entrances = sorted(self.building.entrances, key=lambda door: door.room_a not in main)
+        for door in entrances:
             pose = self._inside_door(door)
             if pose is not None:
                 return pose
-        pose = self._middle_of_largest_space()
+        pose = self._middle_of_largest_space(main)
         if pose is not None:
             return pose
         return self._most_open_cell()
+
+    def main_part(self) -> set[str]:
+        """Ids of the rooms of the building's main part: joined by doors, the most floor together."""
+        import networkx as nx
+
+        parts = nx.connected_components(self.building.graph())
+        area = self.building.room_by_id
+        return max(parts, key=lambda part: sum(area[r].area for r in part), default=set())
 
     def _inside_door(self, door) -> Pose | None:
         room = self.building.room_by_id.get(door.room_a)
@@ -149,10 +164,10 @@ class World:
         x, y = points[ok[0]]
         return (float(x), float(y), math.atan2(normal[1], normal[0]))
 
-    def _middle_of_largest_space(self) -> Pose | None:
+    def _middle_of_largest_space(self, main: set[str]) -> Pose | None:
         from shapely.ops import polylabel
 
-        rooms = sorted(self.building.rooms, key=lambda r: r.area, reverse=True)
+        rooms = sorted(self.building.rooms, key=lambda r: (r.id not in main, -r.area))
         halls = [r for r in rooms if r.label == SemanticLabel.HALL]
         for room in halls[:1] + rooms[:1]:
             for p in (room.polygon.centroid, polylabel(room.polygon, tolerance=self.config.resolution_m)):

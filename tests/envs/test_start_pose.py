@@ -74,6 +74,39 @@ def test_start_pose__off_centre_hall_is_its_point_farthest_from_walls():
     assert x == pytest.approx(a, abs=0.06) and y == pytest.approx(a, abs=0.06) and heading == 0.0
 
 
+def _two_parts(entrances: bool) -> Building:
+    """A 5 m square hall alone (25 m2), and a 4 m square hall with a 7 m x 4 m office beyond it
+    (44 m2), no door between the two parts; with ``entrances``, one in each, the lone hall's
+    listed first (at (0, 2.5); the other at (8, 0))."""
+    rooms = (
+        Room.rectangle("a", "hall", "lobby", (0.0, 0.0, 5.0, 5.0)),
+        Room.rectangle("h", "hall", "lobby", (6.0, 0.0, 10.0, 4.0)),
+        Room.rectangle("o", "big", "office", (10.0, 0.0, 17.0, 4.0)),
+    )
+    doors = [Door("ho", "h", "o", 10.0, 2.0, 0.9, math.pi / 2)]
+    if entrances:
+        doors = [
+            Door("ea", "a", None, 0.0, 2.5, 1.2, math.pi / 2),
+            Door("eh", "h", None, 8.0, 0.0, 1.2, 0.0),
+            *doors,
+        ]
+    return Building("office", rooms, tuple(doors))
+
+
+def test_start_pose__is_at_an_entrance_of_the_part_holding_the_most_floor():
+    building = _two_parts(entrances=True)
+    x, y, heading = ExploreEnv(building=building).reset(seed=0)[1]["start_pose"]
+    # not at the first entrance, into the lone hall: at the other, on its centre line x = 8,
+    # just inside the south wall, facing north
+    assert x == pytest.approx(8.0) and 0.3 <= y < 1.0 and heading == pytest.approx(math.pi / 2)
+
+
+def test_start_pose__without_an_entrance_is_in_the_largest_hall_of_the_part_holding_the_most_floor():
+    # not the centre of the largest hall (the lone one, 25 m2): of the 16 m2 hall by the office
+    _, info = ExploreEnv(building=_two_parts(entrances=False)).reset(seed=0)
+    assert info["start_pose"] == pytest.approx((8.0, 2.0, 0.0))
+
+
 @pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
 def test_start_pose__of_generated_buildings_is_inside_and_where_the_robot_is(env_id):
     env = make_env(env_id)

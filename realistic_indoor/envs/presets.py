@@ -10,6 +10,8 @@ _ENTRY_POINTS = {
     "Explore": "realistic_indoor.envs.explore:ExploreEnv",
     "Search": "realistic_indoor.envs.search:SearchEnv",
 }
+_VECTOR_ENTRY_POINTS = {"Explore": "realistic_indoor.envs.vector:BatchedExploreEnv", "Search": None}
+"""The native vector environment of each task (``gym.make_vec``); ``None``: Gymnasium's own."""
 _MAX_STEPS = {
     "Explore": {"office": 6000, "school": 6000, "house": 1000, "random": 6000},
     "Search": {"office": 12000, "school": 15000, "house": 1000, "random": 12000},
@@ -33,12 +35,15 @@ class EnvPreset(NamedTuple):
         kwargs: Config fields the preset sets (the rest keep the environment's defaults);
             plain values only, so registering imports nothing heavy.
         max_episode_steps: The step limit (also ``kwargs["max_steps"]``).
+        vector_entry_point: ``"module:Class"`` of the native vector environment that
+            ``gym.make_vec`` returns, or ``None`` (Gymnasium's sync vector of single envs).
     """
 
     env_id: str
     entry_point: str
     kwargs: dict[str, Any]
     max_episode_steps: int
+    vector_entry_point: str | None = None
 
 
 def _presets() -> dict[str, EnvPreset]:
@@ -47,7 +52,7 @@ def _presets() -> dict[str, EnvPreset]:
         for building_type, max_steps in _MAX_STEPS[task].items():
             env_id = f"{building_type.capitalize()}{task}-v0"
             kwargs = {"building_type": building_type, "max_steps": max_steps}
-            out[env_id] = EnvPreset(env_id, entry_point, kwargs, max_steps)
+            out[env_id] = EnvPreset(env_id, entry_point, kwargs, max_steps, _VECTOR_ENTRY_POINTS[task])
     return out
 
 

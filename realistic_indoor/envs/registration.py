@@ -23,4 +23,5 @@ def register_envs() -> None:
                 entry_point=preset.entry_point,
                 kwargs=dict(preset.kwargs),
                 max_episode_steps=preset.max_episode_steps,
+                vector_entry_point=preset.vector_entry_point,
             )

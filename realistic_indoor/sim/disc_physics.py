@@ -83,7 +83,7 @@ def segment_grid(segments: np.ndarray, reach_m: float, bucket_m: float = BUCKET_
     Returns:
         The grid; a bucket lists every segment within ``reach_m`` of any point in it.
     """
-    segs = np.ascontiguousarray(np.asarray(segments, dtype=np.float64).reshape(-1, 4))
+    segs = np.array(segments, dtype=np.float64).reshape(-1, 4)  # a writable copy
     pad = reach_m + 1e-6
     if len(segs):
         x0 = math.floor((min(segs[:, 0].min(), segs[:, 2].min()) - pad) / bucket_m) * bucket_m

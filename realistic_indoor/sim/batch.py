@@ -1,0 +1,237 @@
+"""Batched simulation: many robots advanced by one compiled, multi-threaded call.
+
+State lives in arrays with a leading robot axis (physics state, scans, counters) and in typed
+lists indexed by robot (each robot's map) or by building (raster-derived fields, wall grids).
+``robot_building[i]`` names robot ``i``'s building, so several robots in one building is a change
+of data: today each robot gets its own building slot (see ``docs/architecture.md``).
+
+One :func:`step_batch` call runs, for every robot in parallel (numba ``prange``, the GIL
+released): the compiled disc physics (:mod:`realistic_indoor.sim.disc_physics`), the laser
+(the raycaster's kernel), the map update and local view (the robot map's kernels) and the reward
+terms, writing into preallocated arrays. The kernels are those of the single-robot classes, so a
+robot's scans and map follow the same rules; only the physics differs from pymunk, within the
+tolerance ``tests/sim/test_disc_physics.py`` states.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+from numba.typed import List
+
+from realistic_indoor.sim._map_kernels import free_per_strip, integrate_scan, render_local
+from realistic_indoor.sim.disc_physics import STATE_SIZE, THETA, X, Y, drive, segment_grid
+from realistic_indoor.sim.lidar import _readings
+from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, _targets
+from realistic_indoor.sim.raycast import _cast_fan
+from realistic_indoor.sim.world import World
+
+__all__ = ["LUT", "N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch"]
+
+SKIP, STEP, RESET = 0, 1, 2
+"""What :func:`step_batch` does to a robot: nothing, a control step, or a first scan after a reset."""
+N_TERMS = 3
+"""Reward terms per robot: new area (m2), collision (0 or 1), time (1)."""
+
+
+class Batch:
+    """The state of ``n`` robots, each in its own building slot, for :func:`step_batch`.
+
+    Args:
+        n: Number of robots.
+
+    Attributes:
+        phys: ``(n, STATE_SIZE)`` float64 physics state (:mod:`~realistic_indoor.sim.disc_physics`).
+        robot_building: ``(n,)`` int64 building slot of each robot.
+        building_meta: ``(n, 8)`` float64 per building slot: raster origin x, y (m), cell size
+            (m), reachable cells, start pose x, y, heading (m, m, rad), unused.
+        observed: ``(n,)`` int64 reachable cells each robot has observed.
+        worlds: The :class:`World` of each building slot (``None`` before it is loaded).
+    """
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        self.phys = np.zeros((n, STATE_SIZE), dtype=np.float64)
+        self.robot_building = np.arange(n, dtype=np.int64)
+        self.building_meta = np.zeros((n, 8), dtype=np.float64)
+        self.observed = np.zeros(n, dtype=np.int64)
+        self.worlds: list[World | None] = [None] * n
+        empty2 = np.zeros((1, 1), dtype=np.uint8)
+        frozen = np.zeros((1, 1), dtype=np.uint8)
+        frozen.setflags(write=False)  # the raycasters' skip fields are read-only
+        self.skips = List([frozen] * n)
+        self.targets = List([empty2] * n)
+        self.segments = List([np.zeros((1, 4))] * n)
+        self.seg_start = List([np.zeros(2, dtype=np.int64)] * n)
+        self.seg_items = List([np.zeros(0, dtype=np.int64)] * n)
+        self.seg_origin = List([np.array([0.0, 0.0, 1.0, 1.0, 1.0])] * n)
+        self.grids = List([empty2] * n)
+        self.pooled = List([empty2] * n)
+        self.todo = List([np.zeros((1, 1), dtype=np.int32)] * n)
+        self.todo_at_start = [np.zeros((1, 1), dtype=np.int32)] * n
+
+    def load(self, slot: int, world: World, reach_m: float, pool: int) -> None:
+        """Make ``world`` the building of ``slot`` and give robot ``slot`` an empty map of it.
+
+        Args:
+            slot: Building slot (and robot) index.
+            world: The world.
+            reach_m: Robot radius plus half the wall thickness (m), for the wall grid.
+            pool: Map cells per side of a pooled cell (the local view's pixel over the cell).
+        """
+        self.worlds[slot] = world
+        raster = world.raster
+        targets = _targets(world)
+        grid = segment_grid(world.collision_segments, reach_m)
+        self.skips[slot] = world.raycaster._skip
+        self.targets[slot] = targets
+        self.segments[slot] = grid.segments
+        self.seg_start[slot] = grid.start
+        self.seg_items[slot] = grid.items
+        self.seg_origin[slot] = grid.origin
+        h, w = raster.shape
+        self.grids[slot] = np.zeros((h, w), dtype=np.uint8)
+        self.pooled[slot] = np.zeros((-(-h // pool), -(-w // pool)), dtype=np.uint8)
+        self.todo_at_start[slot] = free_per_strip(targets)
+        self.todo[slot] = self.todo_at_start[slot].copy()
+        x0, y0 = raster.origin
+        start = world.start_pose
+        reachable = float(np.count_nonzero(world.reachable))
+        self.building_meta[slot] = (x0, y0, raster.resolution_m, reachable, *start, 0.0)
+
+    def reset_robot(self, i: int) -> None:
+        """Put robot ``i`` at rest at its building's start pose, with an empty map."""
+        self.grids[i].fill(0)
+        self.pooled[i].fill(0)
+        self.todo[i][...] = self.todo_at_start[i]
+        self.observed[i] = 0
+        self.phys[i] = 0.0
+        meta = self.building_meta[self.robot_building[i]]
+        self.phys[i, X], self.phys[i, Y] = meta[4], meta[5]
+        self.phys[i, THETA] = math.remainder(meta[6], math.tau)
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the batch's arrays and its worlds (bytes)."""
+        lists = (self.targets, self.grids, self.pooled, self.todo, self.segments, self.seg_items)
+        total = sum(int(a.nbytes) for lst in lists for a in lst)
+        worlds = sum(w.nbytes for w in self.worlds if w is not None)
+        return total + worlds + self.phys.nbytes
+
+
+LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
+"""Local view grey level of each map cell state."""
+
+
+@njit(cache=True, nogil=True, parallel=True)
+def step_batch(
+    mode,
+    commands,
+    phys,
+    robot_building,
+    meta,
+    skips,
+    targets,
+    segments,
+    seg_start,
+    seg_items,
+    seg_origin,
+    grids,
+    pooled,
+    todo,
+    observed,
+    params,
+    cos_off,
+    sin_off,
+    noise,
+    lidar,
+    local,
+    out_scan,
+    out_local,
+    out_terms,
+    out_motion,
+):  # pragma: no cover - compiled
+    """Advance every robot whose ``mode`` is :data:`STEP`; scan and map those at :data:`RESET`.
+
+    Args:
+        mode: ``(n,)`` int64 :data:`SKIP`, :data:`STEP` or :data:`RESET` per robot.
+        commands: ``(n, 2)`` float64 ``(v m/s, w rad/s)``.
+        phys: ``(n, STATE_SIZE)`` physics state, updated.
+        robot_building: ``(n,)`` building slot of each robot.
+        meta: ``(n_buildings, 8)`` :attr:`Batch.building_meta`.
+        skips: Per building, the raycaster's skip field.
+        targets: Per building, what a beam may mark in each cell (the robot map's targets).
+        segments: Per building, ``(S, 4)`` wall segments (m).
+        seg_start: Per building, the wall grid's bucket starts.
+        seg_items: Per building, the wall grid's segment indices.
+        seg_origin: Per building, the wall grid's origin, bucket side and size.
+        grids: Per robot, its map (cell states), updated.
+        pooled: Per robot, its pooled map, updated.
+        todo: Per robot, unknown free cells per row strip, updated.
+        observed: ``(n,)`` reachable cells observed, updated.
+        params: The robot's constants (:func:`~realistic_indoor.sim.disc_physics.drive_params`).
+        cos_off: ``(n_beams,)`` cosines of the beam offsets.
+        sin_off: ``(n_beams,)`` sines of the beam offsets.
+        noise: ``(n, n_beams)`` standard normal draws for the range noise.
+        lidar: ``(max range m, noise std m, closed fan 0/1)``.
+        local: ``(pool cells, pixel size in pooled cells)``.
+        out_scan: ``(n, n_beams)`` float32 readings (m), written.
+        out_local: ``(n, 1, S, S)`` uint8 local views, written.
+        out_terms: ``(n, 3)`` float64 reward terms (new area m2, collision, time), written.
+        out_motion: ``(n,)`` float64 distance driven (m), written.
+    """
+    n = mode.shape[0]
+    n_beams = cos_off.shape[0]
+    max_range, noise_std, closed = lidar[0], lidar[1], lidar[2] > 0.5
+    pool, pixel = int(local[0]), local[1]
+    for i in prange(n):
+        if mode[i] == SKIP:
+            continue
+        b = robot_building[i]
+        collided = False
+        distance = 0.0
+        if mode[i] == STEP:
+            collided, distance = drive(
+                phys[i],
+                commands[i, 0],
+                commands[i, 1],
+                segments[b],
+                seg_start[b],
+                seg_items[b],
+                seg_origin[b],
+                params,
+            )
+        x0, y0, res = meta[b, 0], meta[b, 1], meta[b, 2]
+        px = (phys[i, X] - x0) / res
+        py = (phys[i, Y] - y0) / res
+        ch = math.cos(phys[i, THETA])
+        sh = math.sin(phys[i, THETA])
+        true_m = np.empty(n_beams, dtype=np.float32)
+        kind = np.empty(n_beams, dtype=np.uint8)
+        _cast_fan(skips[b], px, py, ch, sh, cos_off, sin_off, max_range / res, res, true_m, kind)
+        _readings(true_m, kind, noise[i], noise_std, max_range, out_scan[i])
+        new = integrate_scan(
+            grids[i],
+            pooled[i],
+            pool,
+            targets[b],
+            todo[i],
+            px,
+            py,
+            ch,
+            sh,
+            cos_off,
+            sin_off,
+            true_m,
+            kind,
+            1.0 / res,
+            closed,
+        )
+        observed[i] += new
+        render_local(pooled[i], LUT, px / pool, py / pool, ch, sh, pixel, out_local[i, 0])
+        out_terms[i, 0] = new * res * res
+        out_terms[i, 1] = 1.0 if collided else 0.0
+        out_terms[i, 2] = 1.0
+        out_motion[i] = distance

@@ -1,0 +1,131 @@
+"""The native vector environment: Gymnasium's vector contract, seeds, autoreset, same episodes."""
+
+from __future__ import annotations
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from env_helpers import TEST_AREAS_M2
+from gymnasium.utils.env_checker import data_equivalence
+from gymnasium.vector import AutoresetMode
+
+from realistic_indoor.envs import PRESETS
+from realistic_indoor.envs.vector import INFO_KEYS, BatchedExploreEnv
+from realistic_indoor.errors import ActionError, ConfigError
+
+EXPLORE_IDS = sorted(k for k, p in PRESETS.items() if p.vector_entry_point)
+POSE_TOLERANCE_M = 0.05
+"""The compiled physics' tolerance against pymunk (tests/sim/test_disc_physics.py)."""
+
+
+def _make(env_id: str = "OfficeExplore-v0", n: int = 3, **kwargs) -> BatchedExploreEnv:
+    area = TEST_AREAS_M2[PRESETS[env_id].kwargs["building_type"]]
+    return gym.make_vec(env_id, num_envs=n, area_m2=area, **kwargs)
+
+
+def _rollout(envs, seed: int, n_steps: int) -> list:
+    envs.action_space.seed(seed)
+    out = [envs.reset(seed=seed)]
+    for _ in range(n_steps):
+        out.append(envs.step(envs.action_space.sample()))
+    return out
+
+
+@pytest.mark.parametrize("env_id", EXPLORE_IDS)
+def test_make_vec__returns_the_native_vector_env_with_batched_spaces(env_id):
+    envs = _make(env_id)
+    assert isinstance(envs, BatchedExploreEnv)
+    assert envs.metadata["autoreset_mode"] == AutoresetMode.NEXT_STEP
+    assert envs.config.max_steps == PRESETS[env_id].max_episode_steps
+    obs, info = envs.reset(seed=0)
+    assert envs.observation_space.contains(obs)
+    for _ in range(5):
+        obs, reward, terminated, truncated, info = envs.step(envs.action_space.sample())
+        assert envs.observation_space.contains(obs)
+    assert reward.shape == terminated.shape == truncated.shape == (3,)
+    assert terminated.dtype == truncated.dtype == np.bool_
+    for key in INFO_KEYS:
+        assert info[key].shape == (3,) and info[f"_{key}"].all()
+    assert set(info["rewards"]) == {"new_area", "collision", "time"}
+    envs.close()
+
+
+def test_vector_env__same_seed_gives_the_same_rollout_and_sub_envs_differ():
+    a, b = _rollout(_make(), 7, 20), _rollout(_make(), 7, 20)
+    assert data_equivalence(a, b, exact=True)
+    scans = a[-1][0]["scan"]
+    assert not np.array_equal(scans[0], scans[1])
+
+
+def test_vector_env__sub_env_k_is_the_single_env_seeded_with_seed_plus_k():
+    envs = _make(n=2)
+    obs, _ = envs.reset(seed=10)
+    single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"])
+    first, _ = single.reset(seed=11)
+    assert data_equivalence(first, {k: v[1] for k, v in obs.items()}, exact=True)
+    rng = np.random.default_rng(0)
+    exact_steps = 0
+    for _ in range(150):
+        actions = rng.uniform(-1, 1, (2, 2)).astype(np.float32)
+        obs, *_ = envs.step(actions)
+        one, *_ = single.step(actions[1])
+        assert np.abs(one["pose"][:2] - obs["pose"][1, :2]).max() < POSE_TOLERANCE_M
+        exact_steps += bool(np.array_equal(one["scan"], obs["scan"][1]))
+    assert exact_steps > 0
+
+
+def test_vector_env__autoresets_on_the_next_step():
+    envs = _make(n=2, max_steps=4)
+    envs.reset(seed=0)
+    actions = np.zeros((2, 2), np.float32)
+    for _ in range(3):
+        _, _, terminated, truncated, _ = envs.step(actions)
+        assert not (terminated | truncated).any()
+    _, _, _, truncated, info = envs.step(actions)
+    assert truncated.all() and info["path_length_m"].shape == (2,)
+    obs, reward, terminated, truncated, info = envs.step(actions)  # the reset step
+    assert (reward == 0).all() and not (terminated | truncated).any()
+    assert (info["path_length_m"] == 0).all()
+    assert np.allclose(obs["pose"], 0.0)
+
+
+def test_vector_env__a_fixed_building_keeps_its_world(toy_building):
+    envs = gym.make_vec("OfficeExplore-v0", num_envs=2, building=toy_building, max_steps=3)
+    envs.reset(seed=0)
+    worlds = list(envs.unwrapped._batch.worlds)
+    for _ in range(5):
+        envs.step(np.zeros((2, 2), np.float32))
+    assert envs.unwrapped._batch.worlds == worlds
+
+
+def test_vector_env__refuses_bad_actions_and_arguments():
+    envs = _make(n=2)
+    with pytest.raises(gym.error.ResetNeeded):
+        envs.step(np.zeros((2, 2), np.float32))
+    envs.reset(seed=0)
+    for bad in (np.zeros((3, 2)), np.full((2, 2), np.nan), np.zeros(2)):
+        with pytest.raises(ActionError):
+            envs.step(bad)
+    with pytest.raises(ConfigError):
+        BatchedExploreEnv(num_envs=0)
+    with pytest.raises(ConfigError):
+        BatchedExploreEnv(num_envs=2, victims={"n_victims": 2})
+    with pytest.raises(ConfigError):
+        envs.reset(seed=[1, 2, 3])
+
+
+def test_vector_env__discrete_actions():
+    envs = _make(n=2, action_type="discrete")
+    envs.reset(seed=0)
+    obs, *_ = envs.step(np.array([0, 3]))
+    assert envs.observation_space.contains(obs)
+    with pytest.raises(ActionError):
+        envs.step(np.array([0, 6]))
+
+
+def test_vector_env__works_with_gymnasium_vector_wrappers():
+    envs = gym.wrappers.vector.RecordEpisodeStatistics(_make(n=2, max_steps=3))
+    envs.reset(seed=0)
+    for _ in range(3):
+        *_, info = envs.step(envs.action_space.sample())
+    assert info["_episode"].all() and (info["episode"]["l"] == 3).all()

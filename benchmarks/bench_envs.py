@@ -14,7 +14,10 @@ different machines compare (the header names the CPU model, its cores and the lo
    4,000 m2 (or, with ``--source plans``, fixed real plans of growing size);
 3. a reset of ``OfficeExplore-v0`` with a new default office, split into generating the
    building and building its world (raster, distance transform, reachable floor, physics, map),
-   side by side in one run.
+   side by side in one run;
+4. the native vector environment (``gym.make_vec("OfficeExplore-v0", num_envs=N)``): total
+   robot-steps per second over all N default offices, on one thread and on every core, by wall
+   clock (threads share the process's CPU time), after 100 warm-up steps; memory per sub-env.
 
 Times are CPU seconds of the benchmark's process (``time.process_time``), so that other jobs on
 a shared machine do not count; on a quiet machine wall clock agrees. Memory per environment is
@@ -77,6 +80,7 @@ def main(argv: list[str] | None = None) -> None:
         if not args.skip_growth:
             _table("Growth with area: OfficeExplore-v0, area_m2 asked of the generator", "area", rows, args)
         _reset_split_table("OfficeExplore-v0", args)
+        _vector_table("OfficeExplore-v0", args)
     else:
         from realistic_indoor.io import load
 
@@ -167,6 +171,36 @@ def _reset_split_table(env_id: str, args: argparse.Namespace) -> None:
     print("|---|---:|---:|")
     for name, ms in (("generation", gen), ("world build", build), ("total", gen + build)):
         print(f"| {name} | {ms:.1f} | {ms / 1e3 * ys:,.0f} |")
+    print()
+
+
+def _vector_table(env_id: str, args: argparse.Namespace) -> None:
+    """Robot-steps per second of the native vector env, by N and threads (wall clock)."""
+    import numba
+
+    ys = args.yardstick
+    print(f"## Native vector environment: gym.make_vec({env_id!r}, num_envs=N)\n")
+    print(f"Wall clock, median of {BLOCKS} blocks of 100 steps; random actions.\n")
+    print(f"| N | threads | robot-steps/s | x {YARDSTICK} | MB per sub-env |")
+    print("|---:|---:|---:|---:|---:|")
+    for n in (1, 8) if args.quick else (1, 8, 64):
+        envs = gym.make_vec(env_id, num_envs=n)
+        envs.reset(seed=args.seed)
+        actions = np.random.default_rng(args.seed).uniform(-1, 1, (100, n, 2)).astype(np.float32)
+        for a in actions:
+            envs.step(a)
+        for threads in sorted({1, numba.config.NUMBA_NUM_THREADS}):
+            numba.set_num_threads(threads)
+            rates = []
+            for _ in range(BLOCKS):
+                start = time.perf_counter()
+                for a in actions:
+                    envs.step(a)
+                rates.append(n * len(actions) / (time.perf_counter() - start))
+            rate = statistics.median(rates)
+            print(f"| {n} | {threads} | {rate:,.0f} | {rate / ys:.3f} | {envs.nbytes / n / 1e6:.1f} |")
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+        envs.close()
     print()
 
 

@@ -9,7 +9,7 @@ from realistic_indoor.generator.blocks.section import Hall, Section
 from realistic_indoor.generator.geometry import Rect, subtract_intervals, to_units
 from realistic_indoor.generator.wings.paint import Bay, Regions
 
-__all__ = ["paint_block"]
+__all__ = ["length_for_area", "paint_block"]
 
 MIN_HALL_M = 3.0
 """Narrowest hall along the block (m)."""
@@ -217,3 +217,24 @@ def _end_bays(s: Section, f: _Frame) -> list[Bay]:
         return []
     e, depth = s.end_depth, f.lines[-1] + s.corridor + s.depths[-1][1]
     return [Bay((0, 0, e, depth), "y", "E"), Bay((f.length - e, 0, f.length, depth), "y", "W")]
+
+
+def length_for_area(section: Section, guess: int, area: int) -> int:
+    """The block length whose painted floor area is nearest ``area`` (units).
+
+    The area grows with the length (in steps, where a hall or a strip's piece appears), so the
+    length is bracketed from the guess and then found by bisection.
+    """
+
+    def painted(length: int) -> int:
+        return paint_block(section, length).area
+
+    lo, hi = max(guess // 2, 2 * section.corridor), max(guess, 2 * section.corridor + 1)
+    while painted(hi) < area:
+        lo, hi = hi, hi * 2
+    while lo > 2 * section.corridor and painted(lo) > area:
+        lo = max(lo // 2, 2 * section.corridor)
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (mid, hi) if painted(mid) < area else (lo, mid)
+    return min((lo, hi), key=lambda n: abs(painted(n) - area))

@@ -94,11 +94,18 @@ class Section:
 
 
 def draw_section(
-    rng: np.random.Generator, area: int, dims: Dims, style: BlockStyle, n_halls: int, hall_area: float
+    rng: np.random.Generator,
+    area: int,
+    dims: Dims,
+    style: BlockStyle,
+    n_halls: int,
+    hall_area: float,
+    bars: int | None = None,
 ) -> tuple[Section, int]:
     """Draw a block's plan for a floor area; returns it and the length it is first tried at.
 
-    The block's depth holds as many bars as make its proportions the drawn aspect ratio.
+    The block's depth holds as many bars as make its proportions the drawn aspect ratio, or
+    ``bars`` if given (the wings of a composed footprint have one).
 
     Args:
         rng: Random generator.
@@ -107,9 +114,10 @@ def draw_section(
         style: The type's block conventions.
         n_halls: Halls wanted, the entrance lobby first.
         hall_area: Mean hall area (square units).
+        bars: The number of bars, or ``None`` to choose it from a drawn aspect ratio.
     """
     aspect = math.exp(rng.uniform(*(math.log(a) for a in style.aspect)))
-    k = _bars_for(area, aspect, dims, style)
+    k = _bars_for(area, aspect, dims, style) if bars is None else bars
     depths = _bar_depths(rng, k, dims.depth, style)
     corridor = dims.corridor
     depth = sum(s + n + corridor for s, n in depths)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 __all__ = ["OFFICE_BLOCKS", "SCHOOL_BLOCKS", "BlockStyle"]
 
@@ -30,6 +30,11 @@ class BlockStyle:
             it (else it takes one strip and opens onto one corridor).
         corridor_scale: Corridor width over the width the wing layout would use.
         doors_per_room: Most further doors one room gets (see ``connect_rooms``).
+        compositions: Relative frequency of each footprint: ``"I"`` one block, ``"L"``, ``"T"``
+            and ``"U"`` a main bar with wings (see ``blocks.compose``).
+        max_axes_ratio: Rooms are at least their strip's depth over this wide (real offices'
+            medium and big rooms have axes ratios of 1.4-1.5 on average).
+        max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
         corridor_cuts: How many corridor segments to cut, as a share of the number the model's
             corridor share asks for (real plans divide corridors at doors, width changes and
             fire doors: their segments are short, axes ratio about 4 in offices).
@@ -49,12 +54,15 @@ class BlockStyle:
     corridor_scale: float = 1.0
     doors_per_room: int = 3
     corridor_cuts: float = 1.5
+    max_axes_ratio: float = 1.6
+    max_bar_m: float = 90.0
+    compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
 
 OFFICE_BLOCKS = BlockStyle(
     aspect=(1.0, 2.2),
     facade_scale=(1.05, 1.35),
-    core_scale=(1.1, 1.7),
+    core_scale=(1.6, 2.4),
     section_m=(30.0, 55.0),
     step_p=0.6,
     step_m=(1.0, 3.0),
@@ -74,5 +82,6 @@ SCHOOL_BLOCKS = BlockStyle(
     court_p=0.35,
     core_hall_p=0.3,
     corridor_scale=0.8,
+    compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

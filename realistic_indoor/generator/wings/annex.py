@@ -11,6 +11,8 @@ from realistic_indoor.generator.geometry import Contact, Rect, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     import numpy as np
 
     from realistic_indoor.generator.wings.style import WingStyle
@@ -44,7 +46,14 @@ def _built(plan: Plan, strip: Rect) -> bool:
     return covered >= (strip[2] - strip[0]) * (strip[3] - strip[1])
 
 
-def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: float) -> int:
+def add_annex(
+    plan: Plan,
+    rng: np.random.Generator,
+    style: WingStyle,
+    area_m2: float,
+    label: SemanticLabel = SemanticLabel.HALL,
+    keep_clear: Sequence[Contact] = (),
+) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 
     Its far side holds a strip of small rooms that open onto it (changing rooms, storage).
@@ -53,6 +62,10 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
     along or across the facade and centred on it or flush with either end, and keeps the first
     that overlaps nothing and whose back lies against the building all along (no pocket of void
     enclosed behind it); where nothing fits, a smaller annex (80%, then 65%) is tried.
+
+    ``label`` is the annex's semantic label: a hall (the paper's convention) or a big room (as
+    the real school plans label their gyms). The annex never stands against a wall of
+    ``keep_clear`` (the lobby's facade, kept for the main entrance).
 
     Returns:
         The annex's room index, or -1 if there was no free place (the building is then smaller
@@ -72,9 +85,16 @@ def add_annex(plan: Plan, rng: np.random.Generator, style: WingStyle, area_m2: f
         short_side = area_m2 * scale * 100 / long_side
         for i, w in order:
             box = _fit(plan, w, _outward(plan, i, w), long_side, short_side)
-            if box is not None:
-                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w))
+            if box is not None and not any(_against(box, c) for c in keep_clear):
+                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w), label)
     return -1
+
+
+def _against(box: Rect, wall: Contact) -> bool:
+    """Whether a side of ``box`` lies along part of ``wall``."""
+    if wall.axis == "v":
+        return wall.coord in (box[0], box[2]) and min(box[3], wall.hi) > max(box[1], wall.lo)
+    return wall.coord in (box[1], box[3]) and min(box[2], wall.hi) > max(box[0], wall.lo)
 
 
 def _fit(plan: Plan, w: Contact, sign: int, long_side: float, short_side: float) -> Rect | None:
@@ -93,7 +113,15 @@ def _fit(plan: Plan, w: Contact, sign: int, long_side: float, short_side: float)
     return None
 
 
-def _place(plan: Plan, rng: np.random.Generator, style: WingStyle, box: Rect, axis: str, sign: int) -> int:
+def _place(
+    plan: Plan,
+    rng: np.random.Generator,
+    style: WingStyle,
+    box: Rect,
+    axis: str,
+    sign: int,
+    label: SemanticLabel,
+) -> int:
     """The annex hall, with a strip of small service rooms along its far side opening onto it."""
     x0, y0, x1, y1 = box
     depth = to_units(rng.uniform(2.6, 3.4))
@@ -103,7 +131,7 @@ def _place(plan: Plan, rng: np.random.Generator, style: WingStyle, box: Rect, ax
     else:
         hall = (x0, y0, x1, y1 - depth) if sign > 0 else (x0, y0 + depth, x1, y1)
         strip, along = ((y1 - depth, y1) if sign > 0 else (y0, y0 + depth)), (x0, x1)
-    annex = plan.add(PlanRoom([hall], SemanticLabel.HALL, function=style.annex, role="annex"))
+    annex = plan.add(PlanRoom([hall], label, function=style.annex, role="annex"))
     n = max(2, (along[1] - along[0]) // to_units(3.5))
     cuts = [along[0] + (along[1] - along[0]) * k // n for k in range(n + 1)]
     for k in range(n):

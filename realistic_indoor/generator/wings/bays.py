@@ -83,6 +83,9 @@ class BayContext:
         stub_width: Width of a service core's corridor (units).
         core_rows: Range of small rooms per side of a core.
         shallow: Bays shallower than this hold small rooms and shallow medium rooms (units).
+        max_axes_ratio: Rooms other than small ones are at least the bay's depth over this
+            and at most the depth times this wide (a deep bay gets larger rooms rather than
+            long narrow ones, a shallow one smaller rooms); unbounded by default.
     """
 
     model: BuildingTypeModel
@@ -91,6 +94,7 @@ class BayContext:
     stub_width: int
     core_rows: tuple[int, int]
     shallow: int
+    max_axes_ratio: float = math.inf
 
 
 @dataclass
@@ -137,8 +141,13 @@ def _overlap(t0: int, t1: int, spans: list[tuple[int, int]]) -> int:
 def _room_width(rng: np.random.Generator, ctx: BayContext, label: SemanticLabel, depth: int) -> int:
     stats = ctx.model.stats(label)
     area = stats.sample_area(rng, 0.45 * stats.area_mean, 2.6 * stats.area_mean) * 100
-    low = MIN_SMALL if label is S else MIN_ROOM
-    return int(min(max(area / depth, low), max(3 * depth, to_units(10.0))))
+    low = MIN_SMALL if label is S else max(MIN_ROOM, round(depth / ctx.max_axes_ratio))
+    high = (
+        max(3 * depth, to_units(10.0))
+        if label is S
+        else min(max(3 * depth, to_units(10.0)), depth * ctx.max_axes_ratio)
+    )
+    return int(min(max(area / depth, low), max(high, low)))
 
 
 def core_shape(model: BuildingTypeModel, depth: int, rows_range: tuple[int, int]) -> tuple[int, int, int]:

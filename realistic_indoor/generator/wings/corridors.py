@@ -45,8 +45,9 @@ def segment_corridors(
 
     Extra cuts go to the longest pieces first (in proportion to length), never making a segment
     shorter than ``min_length``. A cut is moved onto a nearby junction (the side of a corridor or
-    hall that meets the piece), where real plans divide corridors, and never leaves a room along
-    the corridor without ``need`` of wall on one segment for its door.
+    hall that meets the piece), where real plans divide corridors, never falls inside the span
+    where a junction meets the piece, and never leaves a room along the corridor without ``need``
+    of wall on one segment for its door.
 
     Args:
         pieces: Straight corridor rectangles (units).
@@ -92,7 +93,10 @@ def _cut(
         return [r]
     seg = (b - a) / (n + 1)
     preferred = _junction_points(r, along_x, junctions)
-    candidates = sorted(_fine_points(a, b, front, need))
+    inside = _junction_spans(r, along_x, junctions)
+    candidates = sorted(
+        p for p in _fine_points(a, b, front, need) if not any(lo < p < hi for lo, hi in inside)
+    )
     points = []
     prev = a
     for k in range(1, n + 1):
@@ -124,12 +128,22 @@ def _door_room(p: int, front: list[tuple[int, int]], need: int) -> bool:
     return all(max(p - lo, hi - p) >= need for lo, hi in front if lo < p < hi)
 
 
-def _junction_points(r: Rect, along_x: bool, junctions: list[Rect]) -> list[int]:
-    """Positions along ``r`` where another circulation space meets its side."""
+def _junction_spans(r: Rect, along_x: bool, junctions: list[Rect]) -> list[tuple[int, int]]:
+    """Spans along ``r`` over which another circulation space meets its side.
+
+    A cut inside one would let that space open onto both segments: a loop of three spaces that
+    real plans do not have.
+    """
     out = []
     for j in junctions:
         if along_x and (j[1] == r[3] or j[3] == r[1]) and j[0] < r[2] and j[2] > r[0]:
-            out += [v for v in (j[0], j[2]) if r[0] < v < r[2]]
+            out.append((j[0], j[2]))
         elif not along_x and (j[0] == r[2] or j[2] == r[0]) and j[1] < r[3] and j[3] > r[1]:
-            out += [v for v in (j[1], j[3]) if r[1] < v < r[3]]
-    return sorted(set(out))
+            out.append((j[1], j[3]))
+    return out
+
+
+def _junction_points(r: Rect, along_x: bool, junctions: list[Rect]) -> list[int]:
+    """Positions along ``r`` where another circulation space meets its side."""
+    lo, hi = (r[0], r[2]) if along_x else (r[1], r[3])
+    return sorted({v for span in _junction_spans(r, along_x, junctions) for v in span if lo < v < hi})

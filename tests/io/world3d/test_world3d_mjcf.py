@@ -35,13 +35,14 @@ def _compile(building, path, **options):
 def _points_in_rooms(building, world: World, count: int = 12) -> list[tuple[float, float]]:
     """``count`` points spread over the rooms (a 0.5 m lattice), each at least 0.3 m from any wall.
 
-    The lattice is off the 5 cm grid the walls' box faces lie on (2 cm past it), so no level beam
-    runs exactly along a face, where both ray casters would be right to disagree.
+    The lattice is off the 5 cm grid the walls' box faces lie on, by different amounts in x and
+    y (2.13 and 2.91 cm past it), so no level beam runs exactly along a face and no diagonal one
+    through a box's corner, where both ray casters would be right to disagree.
     """
     from shapely import contains_xy
 
     x0, y0, x1, y1 = building.bounds
-    xs, ys = np.meshgrid(np.arange(x0 + 0.27, x1, 0.5), np.arange(y0 + 0.27, y1, 0.5))
+    xs, ys = np.meshgrid(np.arange(x0 + 0.2713, x1, 0.5), np.arange(y0 + 0.2791, y1, 0.5))
     xy = np.column_stack([xs.ravel(), ys.ravel()])
     inside = np.any([contains_xy(r.polygon, xy[:, 0], xy[:, 1]) for r in building.rooms], axis=0)
     xy = xy[inside & (world.clearance_at(xy) >= 0.3)]

@@ -1,0 +1,131 @@
+"""Footprints of several blocks: a main bar with wings at right angles (L, T and U shapes).
+
+Real schools, and some offices, are double-loaded bars joined at right angles rather than one
+deep block. A composed footprint is a main bar (one corridor, rooms on both sides) with one
+wing (an L at an end, a T in between) or two (a U, one at each end) standing on its north
+facade. Each wing is a bar too, turned a quarter: its corridor meets the main corridor through
+a short corridor cut across the main bar's north strip, and runs on to the wing's far end.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
+from realistic_indoor.generator.blocks.section import Section, draw_section
+from realistic_indoor.generator.geometry import Rect, to_units
+from realistic_indoor.generator.wings.paint import Bay, Regions
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from realistic_indoor.generator.blocks.style import BlockStyle
+    from realistic_indoor.generator.wings.sizing import Dims
+
+__all__ = ["WINGS", "compose"]
+
+WINGS = {"L": 1, "T": 1, "U": 2}
+"""Wings of each composed shape."""
+
+MIN_COURT_M = 9.0
+"""Narrowest open space between the two wings of a U (m)."""
+
+_TURNED = {"N": "E", "S": "W", "E": "N", "W": "S"}
+"""A bay's corridor side after the wing's quarter turn (x and y swapped)."""
+
+
+def compose(
+    rng: np.random.Generator,
+    shape: str,
+    area: int,
+    dims: Dims,
+    style: BlockStyle,
+    n_halls: int,
+    hall_area: float,
+) -> Regions | None:
+    """The regions of a main bar with wings for ``area`` (square units).
+
+    Returns ``None`` if the wings do not fit along the main bar or a bar would be longer than
+    the style's ``max_bar_m`` (the caller then lays out one block).
+
+    Args:
+        rng: Random generator.
+        shape: ``"L"``, ``"T"`` or ``"U"`` (see :data:`WINGS`).
+        area: Floor area wanted (square units).
+        dims: Corridor width and strip depths.
+        style: The type's block conventions.
+        n_halls: Halls wanted in all, the lobby (in the main bar) first.
+        hall_area: Mean hall area (square units).
+    """
+    n_wings = WINGS[shape]
+    share = rng.uniform(0.45, 0.6) if n_wings == 2 else rng.uniform(0.5, 0.7)
+    main_area = round(area * share)
+    main, guess = draw_section(rng, main_area, dims, style, max(n_halls - n_wings, 1), hall_area, bars=1)
+    main = _north_free(main)
+    length = length_for_area(main, guess, main_area)
+    if length > to_units(style.max_bar_m):
+        return None
+    regions = paint_block(main, length)
+    wing_area = (area - regions.area) // n_wings
+    for k in range(n_wings):
+        wing, guess = draw_section(rng, wing_area, dims, style, 1, hall_area, bars=1)
+        wing_length = length_for_area(wing, guess, wing_area)
+        x = _wing_x(rng, shape, k, length, wing.depth)
+        if x is None or wing_length > to_units(style.max_bar_m):
+            return None
+        _attach(regions, main, wing, paint_block(wing, wing_length), x, k)
+    return regions
+
+
+def _north_free(s: Section) -> Section:
+    """The section with its north facade kept whole for the wings: halls moved south, no steps."""
+    halls = tuple(replace(h, where="S") if h.where == "N" else h for h in s.halls)
+    steps = tuple(st for st in s.steps if st[0] != "N")
+    return replace(s, halls=halls, steps=steps)
+
+
+def _wing_x(rng: np.random.Generator, shape: str, k: int, length: int, depth: int) -> int | None:
+    """Where a wing's west side stands along the main bar (units), or ``None`` if it does not fit."""
+    if shape == "U":
+        if length - 2 * depth < to_units(MIN_COURT_M):
+            return None
+        return 0 if k == 0 else length - depth
+    if length - depth < to_units(MIN_COURT_M):
+        return None
+    if shape == "L":
+        return 0 if rng.random() < 0.5 else length - depth
+    return round((length - depth) * rng.uniform(0.3, 0.7))
+
+
+def _attach(regions: Regions, main: Section, wing: Section, painted: Regions, x: int, k: int) -> None:
+    """Turn wing ``k`` a quarter, stand it on the main bar's north facade at ``x``, join the corridors."""
+    top = main.depth
+    corridor_x = x + wing.depths[0][0]
+    line_top = main.depths[0][0] + main.corridor
+    connector = (corridor_x, line_top, corridor_x + wing.corridor, top)
+    regions.bays = _cut_bays(regions.bays, connector)
+    regions.corridors.append(connector)
+
+    def turn(r: Rect) -> Rect:
+        return (x + r[1], top + r[0], x + r[3], top + r[2])
+
+    regions.corridors += [turn(r) for r in painted.corridors]
+    regions.halls += [(("wing", k, *node), [turn(r) for r in rects]) for node, rects in painted.halls]
+    regions.bays += [
+        Bay(turn(b.rect), "y" if b.axis == "x" else "x", _TURNED[b.access]) for b in painted.bays
+    ]
+    regions.holes += [turn(r) for r in painted.holes]
+    regions.area += painted.area
+
+
+def _cut_bays(bays: list[Bay], cut: Rect) -> list[Bay]:
+    """The bays with the stretch under ``cut`` taken out (bays running along x only)."""
+    out = []
+    for bay in bays:
+        x0, y0, x1, y1 = bay.rect
+        if bay.axis != "x" or min(x1, cut[2]) <= max(x0, cut[0]) or min(y1, cut[3]) <= max(y0, cut[1]):
+            out.append(bay)
+            continue
+        out += [Bay((a, y0, b, y1), "x", bay.access) for a, b in ((x0, cut[0]), (cut[2], x1)) if b > a]
+    return out

@@ -56,6 +56,8 @@ class FunctionRoles:
         core: The type's core functions (offices, classrooms, bedrooms): rooms without a door
             to a corridor rarely get them (default: the validator's core functions of the type).
         grouped: Functions that come only in groups, inside service cores (toilets).
+        public: Functions of rooms everyone walks to (a gym, a canteen, a library): rooms
+            without a door to a corridor or hall never get them.
         core_on_facade: Also keep the core functions for rooms with an outside wall (windows):
             in deep plans the rooms inside get meeting rooms, storage and services.
     """
@@ -66,6 +68,7 @@ class FunctionRoles:
     entrance: tuple[str, ...] = ()
     core: tuple[str, ...] = ()
     grouped: tuple[str, ...] = ("toilet", "washroom")
+    public: tuple[str, ...] = ("gym", "canteen", "cafeteria", "library", "conference hall", "reception")
     core_on_facade: bool = False
 
 
@@ -106,6 +109,8 @@ def assign_functions(
             to_corridor = any(j is not None and plan.rooms[j].label is C for j in partners[i])
             inside = roles.core_on_facade and not exterior_walls(plan, i)
             avoid = roles.grouped + (() if to_corridor and not inside else core)
+            if not any(j is not None and plan.rooms[j].is_circulation for j in partners[i]):
+                weights = {k: v for k, v in weights.items() if k not in roles.public} or weights
             r.function = draw_function(rng, weights, avoid=avoid)
 
 

@@ -112,8 +112,8 @@ class OfficeGenerator(_WingGenerator):
     Examples:
         >>> import numpy as np
         >>> b = OfficeGenerator(area_m2=1500)(np.random.default_rng(1))
-        >>> b.building_type.value, round(b.area / 100), b.metadata["shape"]
-        ('office', 15, 'ring-2')
+        >>> b.building_type.value, round(b.area / 100)
+        ('office', 15)
     """
 
     area_m2: float = DEFAULT_AREAS_M2["office"]

@@ -9,7 +9,7 @@ from realistic_indoor.generator.blocks.compose import compose
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section
 from realistic_indoor.generator.doors import exterior_walls
-from realistic_indoor.generator.furnish import connect_and_name, layout_dims, rooms_from_regions
+from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.plan import B, H, Plan
 from realistic_indoor.generator.wings.annex import add_annex
 
@@ -51,6 +51,7 @@ def block_plan(
     if laid is None:
         laid = _lay_out(rng, area_m2, model, style, blocks, 0.0)
     plan, shape = laid
+    make_suites(plan, rng, blocks.suite_share)
     connect_and_name(plan, rng, model, style, core_on_facade=True, doors_per_room=blocks.doors_per_room)
     return plan, {"shape": shape}
 

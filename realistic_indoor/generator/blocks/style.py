@@ -34,6 +34,8 @@ class BlockStyle:
             and ``"U"`` a main bar with wings (see ``blocks.compose``).
         max_axes_ratio: Rooms are at least their strip's depth over this wide (real offices'
             medium and big rooms have axes ratios of 1.4-1.5 on average).
+        suite_share: Share of the medium and big rooms entered only through a neighbouring room
+            (see ``furnish.make_suites``).
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
         corridor_cuts: How many corridor segments to cut, as a share of the number the model's
             corridor share asks for (real plans divide corridors at doors, width changes and
@@ -55,6 +57,7 @@ class BlockStyle:
     doors_per_room: int = 3
     corridor_cuts: float = 1.5
     max_axes_ratio: float = 1.6
+    suite_share: float = 0.05
     max_bar_m: float = 90.0
     compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
@@ -68,6 +71,7 @@ OFFICE_BLOCKS = BlockStyle(
     step_m=(1.0, 3.0),
     notch_p=0.3,
     core_hall_p=0.3,
+    compositions={"I": 0.75, "L": 0.15, "T": 0.1},
 )
 """Offices: compact deep plans, ring corridors around cores of rooms and halls."""
 

@@ -36,6 +36,8 @@ __all__ = ["HouseGenerator"]
 MIN_AREA_M2, MAX_AREA_M2 = 50.0, 1000.0
 BAND_M = (2.8, 4.2)
 """Depth of the room bands on either side of a hallway (m)."""
+ASPECT = (1.0, 1.5)
+"""Range of the drawn length-to-depth ratio a house's strips are chosen for."""
 MIN_WIDTH = to_units(1.6)
 """Narrowest room along a hallway, so that its door fits (units)."""
 
@@ -135,14 +137,24 @@ def _split(total: int, weights: list[float], least: int = 0) -> list[int]:
     return [edges[k + 1] - edges[k] for k in range(len(weights))]
 
 
-def _strips(rng: np.random.Generator, prog: Program, corridor: int) -> list[tuple[int, int, list, list]]:
-    """Night rooms dealt to strips (front band depth, back band depth, front rooms, back rooms)."""
+def _strips(
+    rng: np.random.Generator, prog: Program, corridor: int, area_m2: float
+) -> list[tuple[int, int, list, list]]:
+    """Night rooms dealt to strips (front band depth, back band depth, front rooms, back rooms).
+
+    One strip or two side by side, whichever makes the house's proportions nearer a drawn aspect
+    ratio (1.0-1.5: houses are compact); two need four night rooms.
+    """
     front_d, back_d = (to_units(rng.uniform(*BAND_M)) for _ in range(2))
-    total = sum(a for *_, a in prog.night) * 100
-    per_strip = 3.0 * (front_d + corridor + back_d) * (front_d + back_d)
-    n_strips = min(2, max(1, math.ceil(total / per_strip)))
-    if prog.hall and len(prog.night) >= 4 and rng.random() < 0.45:
-        n_strips = 2
+    target = rng.uniform(*ASPECT)
+    strip = front_d + corridor + back_d
+
+    def miss(n: int) -> float:
+        depth = n * strip
+        length = area_m2 * 100 / depth
+        return abs(abs(math.log(length / depth)) - math.log(target))
+
+    n_strips = 2 if len(prog.night) >= 4 and miss(2) < miss(1) else 1
     strips = [[[], []] for _ in range(n_strips)]
     loads = [[0.0, 0.0] for _ in range(n_strips)]
     for room in sorted(prog.night, key=lambda r: -r[2]):
@@ -150,9 +162,29 @@ def _strips(rng: np.random.Generator, prog: Program, corridor: int) -> list[tupl
         strips[k][side].append(room)
         loads[k][side] += room[2] * 100 / (front_d if side == 0 else back_d)
     for pair in strips:
-        if pair[0] and pair[1] and any(all(lab is S for lab, _, _ in side) for side in pair):
-            pair[0], pair[1] = pair[0] + pair[1], []
+        _balance(pair)
     return [(front_d if f else 0, back_d if b else 0, f, b) for f, b in strips]
+
+
+def _balance(pair: list[list]) -> None:
+    """Give a band of only small rooms an ordinary room from the other band, else merge the two.
+
+    A band of small rooms alone would stretch them along the whole hallway; a single band makes a
+    long, thin house.
+    """
+    if not (pair[0] and pair[1]):
+        return
+    small = [all(lab is S for lab, _, _ in side) for side in pair]
+    if not any(small):
+        return
+    poor, rich = (0, 1) if small[0] else (1, 0)
+    ordinary = [r for r in pair[rich] if r[0] is not S]
+    if len(pair[rich]) >= 2 and ordinary and not small[rich]:
+        room = min(ordinary, key=lambda r: r[2])
+        pair[rich].remove(room)
+        pair[poor].append(room)
+    else:
+        pair[0], pair[1] = pair[0] + pair[1], []
 
 
 def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel) -> Plan:
@@ -161,7 +193,7 @@ def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeMod
     corridor = to_units(min(max(math.sqrt(c_stats.area_mean / max(c_stats.axes_ratio_mean, 1.0)), 1.1), 1.8))
     entry_w = to_units(rng.uniform(2.2, 3.2))
     while True:
-        strips = _strips(rng, prog, corridor)
+        strips = _strips(rng, prog, corridor, area_m2)
         depth = sum(f + corridor + b for f, b, _, _ in strips)
         x_day = sum(_day_columns(prog, depth, entry_w, strips[0][0] + corridor))
         least = max(

@@ -117,17 +117,20 @@ def connect_and_name(
     style: WingStyle,
     core_on_facade: bool = False,
     doors_per_room: int = 1,
+    pairs: float | None = None,
 ) -> None:
     """Doors (circulation, entrances, rooms, reachability, no mazes), then functions.
 
     ``core_on_facade`` keeps the type's core function (offices, classrooms) for rooms with an
     outside wall (see :class:`~realistic_indoor.generator.functions.FunctionRoles`);
-    ``doors_per_room`` is the most further doors one room gets (see
-    :func:`~realistic_indoor.generator.connect.connect_rooms`).
+    ``doors_per_room`` is the most further doors one room gets and ``pairs`` the share of
+    medium and big rooms given a connecting door to a neighbour (default: the model's), see
+    :func:`~realistic_indoor.generator.connect.connect_rooms`.
     """
     connect_circulation(plan)
     _entrances(plan, rng, _lobby(plan), style, model)
-    connect_rooms(plan, model, rng, model.structures.connected_room_pairs, per_room=doors_per_room)
+    share = model.structures.connected_room_pairs if pairs is None else pairs
+    connect_rooms(plan, model, rng, share, per_room=doors_per_room)
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
     roles = FunctionRoles(

@@ -51,8 +51,18 @@ def block_plan(
     if laid is None:
         laid = _lay_out(rng, area_m2, model, style, blocks, 0.0)
     plan, shape = laid
-    make_suites(plan, rng, blocks.suite_share)
-    connect_and_name(plan, rng, model, style, core_on_facade=True, doors_per_room=blocks.doors_per_room)
+    pairs = model.structures.connected_room_pairs
+    if blocks.suites:
+        make_suites(plan, rng, pairs / 2)
+    connect_and_name(
+        plan,
+        rng,
+        model,
+        style,
+        core_on_facade=True,
+        doors_per_room=blocks.doors_per_room,
+        pairs=0.0 if blocks.suites else pairs,
+    )
     return plan, {"shape": shape}
 
 

@@ -34,8 +34,10 @@ class BlockStyle:
             and ``"U"`` a main bar with wings (see ``blocks.compose``).
         max_axes_ratio: Rooms are at least their strip's depth over this wide (real offices'
             medium and big rooms have axes ratios of 1.4-1.5 on average).
-        suite_share: Share of the medium and big rooms entered only through a neighbouring room
-            (see ``furnish.make_suites``).
+        suites: Make the model's connected pairs of medium and big rooms suites (one room
+            entered only through the other, see ``furnish.make_suites``) instead of two rooms
+            with a corridor door each and a door between them: real plans' connected rooms are
+            mostly reached through each other, so most of their rooms keep one door.
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
         corridor_cuts: How many corridor segments to cut, as a share of the number the model's
             corridor share asks for (real plans divide corridors at doors, width changes and
@@ -55,9 +57,9 @@ class BlockStyle:
     through_hall_p: float = 0.3
     corridor_scale: float = 1.0
     doors_per_room: int = 3
-    corridor_cuts: float = 1.5
+    corridor_cuts: float = 1.25
     max_axes_ratio: float = 1.6
-    suite_share: float = 0.05
+    suites: bool = True
     max_bar_m: float = 90.0
     compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
@@ -86,6 +88,7 @@ SCHOOL_BLOCKS = BlockStyle(
     court_p=0.35,
     core_hall_p=0.3,
     corridor_scale=0.8,
+    corridor_cuts=1.0,
     compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

@@ -1,12 +1,14 @@
 """Benchmark of the building generators on one core: prints Markdown tables.
 
 1. Speed: median time to generate one building (``gen(rng)``, the call environments make each
-   episode) at 500, 2,000 and 8,000 m2 for offices, schools and the random baseline, and at
-   150, 500 and 1,000 m2 for houses (their largest size), with the median ``check_building``
-   time beside it for scale.
+   episode) at 500, 2,000 and 8,000 m2 for offices, schools (default block layout, and the
+   paper's model with the wing layout) and the random baseline, and at 150, 500 and 1,000 m2
+   for houses (their largest size), with the median ``check_building`` time beside it for scale.
+   Each time is also given in CartPole-v1 steps (``gym.make``, random actions) measured in the
+   same run, and the machine is named, because absolute figures differ between machines.
 2. Realism: Table 1 of the paper next to the same statistics over generated buildings at
-   default size (realistic generator and the World-Generator-like baseline), with the paper's
-   connectivity facts.
+   default size (the paper's model, the default model fitted to real plans, and the
+   World-Generator-like baseline), with the paper's connectivity facts.
 
 Usage::
 
@@ -21,7 +23,9 @@ import platform
 import statistics
 import time
 
+import gymnasium as gym
 import numpy as np
+from bench_envs import machine
 
 from realistic_indoor.building import SemanticLabel, check_building
 from realistic_indoor.generator import make_generator
@@ -44,8 +48,10 @@ def main(argv: list[str] | None = None) -> None:
     args = parser.parse_args(argv)
     runs, sample = (15, 60) if args.quick else (40, 200)
     print(f"# Generator benchmark ({'quick' if args.quick else 'full'}; one process, one core)\n")
-    print(f"Python {platform.python_version()}, NumPy {np.__version__}, {platform.machine()}\n")
-    _speed(runs)
+    print(f"Python {platform.python_version()}, NumPy {np.__version__}, {machine()}\n")
+    yardstick = _cartpole_rate()
+    print(f"CartPole-v1 (gym.make, random actions): {yardstick:,.0f} steps/s in this run.\n")
+    _speed(runs, yardstick)
     for kind in ("office", "school", "house"):
         _realism(kind, sample)
 
@@ -59,21 +65,40 @@ def _median_ms(fn, runs: int) -> float:
     return 1000 * statistics.median(times)
 
 
-def _speed(runs: int) -> None:
+def _cartpole_rate(steps: int = 20_000) -> float:
+    """CartPole-v1 steps per second with random actions: the yardstick measured in this run."""
+    env = gym.make("CartPole-v1")
+    env.action_space.seed(0)
+    actions = [env.action_space.sample() for _ in range(steps)]
+    env.reset(seed=0)
+    start = time.perf_counter()
+    for a in actions:
+        _, _, terminated, truncated, _ = env.step(a)
+        if terminated or truncated:
+            env.reset()
+    return steps / (time.perf_counter() - start)
+
+
+def _speed(runs: int, yardstick: float) -> None:
     print(f"## Time per building (median of {runs} seeds, ms)\n")
-    print("| generator | area m2 | rooms | generate ms | ms per 1000 m2 | check_building ms |")
-    print("|---|---|---|---|---|---|")
-    for kind, sizes in SIZES_M2.items():
-        for area in sizes:
-            gen = make_generator(kind, area if kind != "school" or area >= 800 else 800)
+    print(
+        "| generator | area m2 | rooms | generate ms | ms per 1000 m2 | in CartPole steps | check_building ms |"
+    )
+    print("|---|---|---|---|---|---|---|")
+    variants = [(k, {}) for k in SIZES_M2] + [("office", {"model": "paper"}), ("school", {"model": "paper"})]
+    for kind, options in variants:
+        for area in SIZES_M2[kind]:
+            gen = make_generator(kind, area if kind != "school" or area >= 800 else 800, **options)
             gen(np.random.default_rng(10_000))
             built = [gen(np.random.default_rng(s)) for s in range(runs)]
             ms = _median_ms(lambda s, g=gen: g(np.random.default_rng(s)), runs)
             check = _median_ms(lambda s, b=built: check_building(b[s]), runs)
             real_area = statistics.median(b.area for b in built)
             rooms = statistics.median(len(b.rooms) for b in built)
+            name = f"{kind} (paper, wings)" if options else kind
             print(
-                f"| {kind} | {real_area:,.0f} | {rooms:.0f} | {ms:.1f} | {ms / real_area * 1000:.1f} | {check:.1f} |"
+                f"| {name} | {real_area:,.0f} | {rooms:.0f} | {ms:.1f} | {ms / real_area * 1000:.1f} "
+                f"| {ms / 1000 * yardstick:,.0f} | {check:.1f} |"
             )
     print("\nSchools start at 800 m2 (their smallest size); the 500 m2 row is an 800 m2 school.\n")
 
@@ -92,9 +117,15 @@ def _realism(kind: str, sample: int) -> None:
     paper = reference_table(kind)
     sets = {"paper": paper}
     conn = {}
-    for name, gen in ((kind, make_generator(kind)), ("random", make_generator("random"))):
-        if name == "random" and kind != "office":
-            continue
+    generators = [(kind, make_generator(kind))]
+    if kind != "house":
+        generators = [
+            (f"{kind} (paper)", make_generator(kind, model="paper")),
+            (f"{kind} (default)", generators[0][1]),
+        ]
+    if kind == "office":
+        generators.append(("random", make_generator("random")))
+    for name, gen in generators:
         built = [gen(np.random.default_rng(s)) for s in range(sample)]
         sets[name] = label_table(built)
         conn[name] = Connectivity.combine([connectivity(b) for b in built])

@@ -1,9 +1,9 @@
 """Numba kernels of the robot's map: which cells a scan swept, marking them, the local view.
 
 Geometry is in cell units: cell ``(r, c)`` spans ``[c, c + 1) x [r, r + 1)``, centre at
-``(c + 0.5, r + 0.5)``. Cells are gathered as row spans ``(row, first col, end col)`` and
-marked in one loop, with the marking written inline: a numba call taking arrays costs more
-than the marking itself.
+``(c + 0.5, r + 0.5)``. The fan's cells are gathered as row spans ``(row, first col, end col)``
+and marked in one loop, each beam's cells as it is walked. The marking of a cell is written out
+in both loops: as a numba function of the arrays it made the map update four times slower.
 """
 
 from __future__ import annotations
@@ -21,7 +21,8 @@ T_WALL, T_OUTSIDE, T_FREE, T_REACHABLE = 0, 1, 2, 3
 """What the ground truth lets a beam mark in a cell: free only if ``>= T_FREE``."""
 STRIP = 32
 """Cells per row strip: ``todo[r, c // STRIP]`` counts the free cells of a strip still unknown,
-so a span walks past a fully observed strip in one step (most of a scan covers known floor)."""
+so a span walks past a fully observed strip, or the rest of one, in one step (most of a scan
+covers known floor)."""
 _NUDGE = 1e-3
 """Distance (cells) past a beam's end at which the wall cell it hit is looked up."""
 
@@ -51,8 +52,7 @@ def integrate_scan(
         new = _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1)
     else:
         new = 0
-    rows, c0, c1 = _beam_spans(px, py, dxs, dys, ts, closed, h, w)
-    new += _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1)
+    new += _mark_beams(grid, pooled, k, targets, todo, px, py, dxs, dys, ts, closed)
     for i in range(n):
         if kind[i] == WALL:
             c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
@@ -71,8 +71,8 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
         c = c0[i]
         end = c1[i]
         while c < end:
-            if c % STRIP == 0 and c + STRIP <= end and todo[r, c // STRIP] == 0:
-                c += STRIP
+            if todo[r, c // STRIP] == 0:  # nothing left to mark in this strip: jump past it
+                c = (c // STRIP + 1) * STRIP
                 continue
             if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
                 grid[r, c] = MAPPED_FREE
@@ -183,32 +183,31 @@ def _sort_small(xs, a, b):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def _beam_spans(px, py, dxs, dys, ts, closed, h, w):  # pragma: no cover - compiled
-    """One-cell spans for the cells each beam crosses beyond the fan (where the fan stops)."""
+def _mark_beams(grid, pooled, k, targets, todo, px, py, dxs, dys, ts, closed):  # pragma: no cover - compiled
+    """Mark the cells each beam crosses beyond the fan (where the fan stops); return the new ones.
+
+    A beam is walked from one cell short of the shorter of its neighbours' ranges (a lone beam,
+    with no fan beside it, from the sensor) to its own end.
+    """
     n = dxs.shape[0]
-    t0s = np.zeros(n)  # a lone beam (no fan beside it) is walked from the sensor
+    h, w = grid.shape
+    new = 0
     for i in range(n):
+        t0 = 0.0
         if n > 1:
             t0 = ts[i]
             if i > 0 or closed:
                 t0 = min(t0, ts[i - 1])
             if i < n - 1 or closed:
                 t0 = min(t0, ts[(i + 1) % n])
-            t0s[i] = max(t0 - 1.0, 0.0)
-    cap = 0
-    for i in range(n):
-        cap += 2 * math.ceil(ts[i] - t0s[i]) + 4
-    rows = np.empty(cap, dtype=np.int64)
-    cols = np.empty(cap, dtype=np.int64)
-    s = 0
-    for i in range(n):
-        s = _walk(px, py, dxs[i], dys[i], t0s[i], ts[i], h, w, rows, cols, s)
-    return rows[:s], cols[:s], cols[:s] + 1
+            t0 = max(t0 - 1.0, 0.0)
+        new += _walk_and_mark(grid, pooled, k, targets, todo, px, py, dxs[i], dys[i], t0, ts[i], h, w)
+    return new
 
 
 @njit(cache=True, nogil=True)
-def _walk(px, py, dx, dy, t0, t1, h, w, rows, cols, s):  # pragma: no cover - compiled
-    """Append the cells a ray crosses between ``t0`` and ``t1`` (exact grid traversal)."""
+def _walk_and_mark(grid, pooled, k, targets, todo, px, py, dx, dy, t0, t1, h, w):  # pragma: no cover
+    """Mark the cells a ray crosses between ``t0`` and ``t1`` (exact grid traversal)."""
     x = px + t0 * dx
     y = py + t0 * dy
     c = math.floor(x)
@@ -219,10 +218,15 @@ def _walk(px, py, dx, dy, t0, t1, h, w, rows, cols, s):  # pragma: no cover - co
     t_dr = abs(1.0 / dy) if dy != 0.0 else 1e30
     t_c = t0 + ((c + 1 - x) if dx > 0 else (x - c)) * t_dc if dx != 0.0 else 1e30
     t_r = t0 + ((r + 1 - y) if dy > 0 else (y - r)) * t_dr if dy != 0.0 else 1e30
-    while 0 <= r < h and 0 <= c < w and s < rows.shape[0]:
-        rows[s] = r
-        cols[s] = c
-        s += 1
+    new = 0
+    while 0 <= r < h and 0 <= c < w:
+        if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
+            grid[r, c] = MAPPED_FREE
+            todo[r, c // STRIP] -= 1
+            if pooled[r // k, c // k] == UNKNOWN:
+                pooled[r // k, c // k] = MAPPED_FREE
+            if targets[r, c] == T_REACHABLE:
+                new += 1
         if min(t_c, t_r) >= t1:
             break
         if t_c < t_r:
@@ -231,7 +235,7 @@ def _walk(px, py, dx, dy, t0, t1, h, w, rows, cols, s):  # pragma: no cover - co
         else:
             r += step_r
             t_r += t_dr
-    return s
+    return new
 
 
 @njit(cache=True, nogil=True)

@@ -48,6 +48,7 @@ from bench_sim import PLAN_FILES, PLANS  # the simulator benchmark's plans, span
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
 from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.simulation import Simulation
+from realistic_indoor.envs.vector import ROBOTS_PER_THREAD
 
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
 YARDSTICK = "CartPole-v1"
@@ -198,7 +199,8 @@ def _vector_table(env_id: str, args: argparse.Namespace) -> None:
                     envs.step(a)
                 rates.append(n * len(actions) / (time.perf_counter() - start))
             rate = statistics.median(rates)
-            print(f"| {n} | {threads} | {rate:,.0f} | {rate / ys:.3f} | {envs.nbytes / n / 1e6:.1f} |")
+            used = max(1, min(threads, n // ROBOTS_PER_THREAD))  # the env's own cap
+            print(f"| {n} | {used} | {rate:,.0f} | {rate / ys:.3f} | {envs.nbytes / n / 1e6:.1f} |")
         numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
         envs.close()
     print()

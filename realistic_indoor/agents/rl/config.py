@@ -45,7 +45,9 @@ class PPOConfig:
         obs_keys: Observation keys the policy reads (``pose`` is left out by default: absolute
             odometry does not generalise across buildings); ``victims`` is added for search ids.
         n_envs: Environments run in parallel.
-        vec_env: ``"subproc"`` (one process each) or ``"dummy"`` (all in this process).
+        vec_env: ``"batched"`` (the ids' native vector environments: all sub-environments
+            of an id stepped by one compiled call, in this process; the search ids fall back to
+            ``"dummy"``), ``"subproc"`` (one process each) or ``"dummy"`` (all in this process).
         total_timesteps: Environment steps of training, over all environments.
         seed: Seed of the policy and of the environments (``seed + i`` for the ``i``-th).
         n_steps: Steps per environment per rollout.
@@ -65,7 +67,7 @@ class PPOConfig:
     action_type: str = "discrete"
     obs_keys: tuple[str, ...] = ("scan", "local_map", "velocity")
     n_envs: int = 4
-    vec_env: str = "subproc"
+    vec_env: str = "batched"
     total_timesteps: int = 500_000
     seed: int = 0
     n_steps: int = 512
@@ -88,8 +90,8 @@ class PPOConfig:
             raise ConfigError(
                 f"PPOConfig.action_type must be discrete or continuous, got {self.action_type!r}"
             )
-        if self.vec_env not in ("subproc", "dummy"):
-            raise ConfigError(f"PPOConfig.vec_env must be subproc or dummy, got {self.vec_env!r}")
+        if self.vec_env not in ("batched", "subproc", "dummy"):
+            raise ConfigError(f"PPOConfig.vec_env must be batched, subproc or dummy, got {self.vec_env!r}")
         for name in (
             "max_steps",
             "n_envs",

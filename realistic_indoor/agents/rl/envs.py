@@ -27,6 +27,7 @@ class EnvFactory:
             self.kwargs["area_m2"] = config.areas_m2[building_type]
         self.kwargs["action_type"] = config.action_type
         self.keys = tuple(config.obs_keys) + (("victims",) if "Search" in env_id else ())
+        self.batched = PRESETS[env_id].vector_entry_point is not None
 
     def __call__(self) -> Any:
         """A new environment: the id with the training settings, filtered keys, a Monitor."""
@@ -46,13 +47,40 @@ def env_factories(config: PPOConfig) -> list[EnvFactory]:
 
 
 def make_vec_env(config: PPOConfig) -> Any:
-    """The stable-baselines3 vector environment of a training run, seeded with ``config.seed``."""
+    """The stable-baselines3 vector environment of a training run, seeded with ``config.seed``.
+
+    ``vec_env="batched"``: the ids' native vector environments (one compiled step each, in this
+    process) behind :class:`~realistic_indoor.agents.rl.batched_vec_env.BatchedVecEnv`, the ids
+    taking the ``n_envs`` sub-environments in turn; ids without one (the search tasks) fall back
+    to ``"dummy"``. Otherwise one Gymnasium environment per sub-environment, in sub-processes
+    (``"subproc"``) or in this process (``"dummy"``).
+    """
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
     factories = env_factories(config)
-    if config.vec_env == "subproc" and config.n_envs > 1:
+    if config.vec_env == "batched" and all(f.batched for f in factories):
+        venv = _batched(factories)
+    elif config.vec_env == "subproc" and config.n_envs > 1:
         venv = SubprocVecEnv(factories, start_method="fork")
     else:
         venv = DummyVecEnv(factories)
     venv.seed(config.seed)
     return venv
+
+
+def _batched(factories: list[EnvFactory]) -> Any:
+    """One native vector environment per id, with as many sub-environments as it has factories."""
+    import gymnasium as gym
+
+    import realistic_indoor.envs  # noqa: F401 - registers the ids
+    from realistic_indoor.agents.rl.batched_vec_env import BatchedVecEnv
+
+    counts: dict[str, int] = {}
+    for f in factories:
+        counts[f.env_id] = counts.get(f.env_id, 0) + 1
+    by_id = {f.env_id: f for f in factories}
+    groups = [
+        gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **by_id[env_id].kwargs)
+        for env_id, n in counts.items()
+    ]
+    return BatchedVecEnv(groups, factories[0].keys)

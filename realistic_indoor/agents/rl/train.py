@@ -51,8 +51,9 @@ def train_ppo(
         config: The training run.
         out_path: Where to save the model; the config and training curve go to the same
             name with ``.json``.
-        log: Receives a progress line (steps, seconds, episodes, mean coverage) every
-            ``log_every`` steps and at the end.
+        log: Receives a progress line (steps, seconds, episodes, mean coverage, environment
+            steps per second of collecting, and the share of wall-clock time spent collecting
+            rollouts against learning from them) every ``log_every`` steps and at the end.
         progress: Also show a progress bar (tqdm, on stderr, only when it is a terminal) with
             the episodes finished and their mean coverage.
         log_every: Environment steps between two progress lines (and points of the curve).
@@ -96,6 +97,9 @@ def train_ppo(
         "seconds": round(seconds, 1),
         "episodes": result.episodes,
         "last_coverage": result.last_coverage,
+        "collect_seconds": round(tracker.collecting, 1),
+        "env_steps_per_s": round(result.timesteps / max(tracker.collecting, 1e-9), 1),
+        "collect_share": round(tracker.collecting / max(seconds, 1e-9), 3),
         "curve": tracker.curve,
     }
     write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
@@ -124,6 +128,8 @@ def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_
             self.coverages: list[float] = []
             self.curve: list[dict[str, float]] = []
             self.bar = tqdm(disable=True)
+            self.collecting = 0.0
+            self.rollout_start = self.start
 
         def mean(self) -> float:
             """Mean final coverage of the last 50 episodes (NaN before the first ends)."""
@@ -133,6 +139,12 @@ def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_
         def _on_training_start(self) -> None:
             self.start = time.perf_counter()
             self.bar = tqdm(total=total, unit="step", desc="training PPO", disable=None if bar else True)
+
+        def _on_rollout_start(self) -> None:
+            self.rollout_start = time.perf_counter()
+
+        def _on_rollout_end(self) -> None:
+            self.collecting += time.perf_counter() - self.rollout_start
 
         def _on_step(self) -> bool:
             ended = [float(i["coverage"]) for i in self.locals["infos"] if "episode" in i]
@@ -153,10 +165,20 @@ def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_
         def _log(self) -> None:
             elapsed = time.perf_counter() - self.start
             mean = self.mean()
-            self.curve.append({"timesteps": self.num_timesteps, "seconds": elapsed, "coverage": mean})
+            rate = self.num_timesteps / max(self.collecting, 1e-9)
+            share = self.collecting / max(elapsed, 1e-9)
+            self.curve.append(
+                {
+                    "timesteps": self.num_timesteps,
+                    "seconds": elapsed,
+                    "coverage": mean,
+                    "env_steps_per_s": rate,
+                    "collect_share": share,
+                }
+            )
             line = (
                 f"{self.num_timesteps:>9} steps  {elapsed:7.0f} s  {len(self.coverages):5d} episodes  "
-                f"coverage (last 50) {mean:.3f}"
+                f"coverage (last 50) {mean:.3f}  env {rate:,.0f} steps/s  collect {share:.0%} / learn {1 - share:.0%}"
             )
             with tqdm.external_write_mode():
                 log(line)

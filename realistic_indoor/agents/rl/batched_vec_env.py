@@ -1,0 +1,150 @@
+"""A stable-baselines3 ``VecEnv`` over the native vector environments (one compiled step per id).
+
+stable-baselines3 resets a finished sub-environment in the same step, returning the new
+episode's first observation and the last one in ``info["terminal_observation"]``; the native
+:class:`~realistic_indoor.envs.vector.BatchedExploreEnv` resets on the next step (Gymnasium's
+default). The adapter restarts finished sub-environments at once
+(:meth:`BatchedExploreEnv.restart`) and does what SB3's ``Monitor`` would: ``info["episode"]``
+(return, length, seconds) when an episode ends, ``TimeLimit.truncated``, and ``coverage``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from typing import Any
+
+import gymnasium as gym
+import numpy as np
+from stable_baselines3.common.vec_env.base_vec_env import VecEnv, VecEnvIndices, VecEnvStepReturn
+
+__all__ = ["BatchedVecEnv"]
+
+
+class BatchedVecEnv(VecEnv):
+    """Several native vector environments (e.g. one per registered id) as one SB3 ``VecEnv``.
+
+    Sub-environments are numbered group after group; observations are the groups' arrays
+    concatenated and filtered to ``keys``.
+
+    Args:
+        groups: Native vector environments with the same action space and observation keys.
+        keys: Observation keys the policy reads.
+
+    Raises:
+        ValueError: If ``groups`` is empty or their spaces differ.
+    """
+
+    def __init__(self, groups: Sequence[Any], keys: Sequence[str]) -> None:
+        if not groups:
+            raise ValueError("BatchedVecEnv needs at least one vector environment")
+        self.groups = list(groups)
+        self.keys = tuple(keys)
+        first = self.groups[0]
+        obs_space = gym.spaces.Dict({k: first.single_observation_space[k] for k in self.keys})
+        for g in self.groups[1:]:
+            if g.single_action_space != first.single_action_space or any(
+                g.single_observation_space[k] != obs_space[k] for k in self.keys
+            ):
+                raise ValueError("BatchedVecEnv: the vector environments' spaces differ")
+        sizes = [g.num_envs for g in self.groups]
+        self._bounds = np.concatenate([[0], np.cumsum(sizes)])
+        self.render_mode = None
+        super().__init__(int(self._bounds[-1]), obs_space, first.single_action_space)
+        self._actions: np.ndarray | None = None
+        self._returns = np.zeros(self.num_envs)
+        self._lengths = np.zeros(self.num_envs, dtype=np.int64)
+        self._starts = np.full(self.num_envs, time.perf_counter())
+
+    def reset(self) -> dict[str, np.ndarray]:
+        """Start an episode in every sub-environment (seeded by :meth:`seed` if it was called)."""
+        parts = []
+        for j, g in enumerate(self.groups):
+            lo, hi = self._bounds[j], self._bounds[j + 1]
+            seeds = self._seeds[lo:hi]
+            obs, _ = g.reset(seed=None if all(s is None for s in seeds) else list(seeds))
+            parts.append(obs)
+        self._reset_seeds()
+        self._returns[:] = 0.0
+        self._lengths[:] = 0
+        self._starts[:] = time.perf_counter()
+        return self._join(parts)
+
+    def step_async(self, actions: np.ndarray) -> None:
+        """Remember the actions of the next :meth:`step_wait`."""
+        self._actions = np.asarray(actions)
+
+    def step_wait(self) -> VecEnvStepReturn:
+        """Step every group; restart the finished sub-environments (same-step autoreset)."""
+        if self._actions is None:
+            raise RuntimeError("step_async() must come before step_wait()")
+        parts, rewards, dones, infos = [], [], [], []
+        for j, g in enumerate(self.groups):
+            lo, hi = self._bounds[j], self._bounds[j + 1]
+            obs, reward, terminated, truncated, info = g.step(self._actions[lo:hi])
+            done = terminated | truncated
+            group_infos = self._infos(lo, reward, terminated, truncated, info)
+            if done.any():
+                ended = np.flatnonzero(done)
+                for k in ended:
+                    group_infos[k]["terminal_observation"] = {key: obs[key][k].copy() for key in self.keys}
+                obs = g.restart(ended)
+            parts.append(obs)
+            rewards.append(reward)
+            dones.append(done)
+            infos.extend(group_infos)
+        self._actions = None
+        return self._join(parts), np.concatenate(rewards).astype(np.float32), np.concatenate(dones), infos
+
+    def _infos(
+        self, lo: int, reward: np.ndarray, terminated: np.ndarray, truncated: np.ndarray, info: dict
+    ) -> list[dict[str, Any]]:
+        """Per sub-environment ``info`` dicts of one group (Monitor's ``episode`` at an end)."""
+        out = []
+        now = time.perf_counter()
+        for k in range(len(reward)):
+            i = lo + k
+            self._returns[i] += reward[k]
+            self._lengths[i] += 1
+            item: dict[str, Any] = {
+                "coverage": float(info["coverage"][k]),
+                "TimeLimit.truncated": bool(truncated[k] and not terminated[k]),
+            }
+            if terminated[k] or truncated[k]:
+                item["episode"] = {
+                    "r": float(self._returns[i]),
+                    "l": int(self._lengths[i]),
+                    "t": round(now - self._starts[i], 6),
+                }
+                self._returns[i], self._lengths[i], self._starts[i] = 0.0, 0, now
+            out.append(item)
+        return out
+
+    def _join(self, parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+        return {k: np.concatenate([p[k] for p in parts]) for k in self.keys}
+
+    def close(self) -> None:
+        """Close every group."""
+        for g in self.groups:
+            g.close()
+
+    def get_attr(self, attr_name: str, indices: VecEnvIndices = None) -> list[Any]:
+        """The attribute of each sub-environment's group (``render_mode`` is ``None``)."""
+        return [getattr(self._group_of(i), attr_name) for i in self._get_indices(indices)]
+
+    def set_attr(self, attr_name: str, value: Any, indices: VecEnvIndices = None) -> None:
+        """Not supported: sub-environments share their group's state."""
+        raise NotImplementedError("BatchedVecEnv sub-environments have no attributes of their own")
+
+    def env_method(
+        self, method_name: str, *args: Any, indices: VecEnvIndices = None, **kwargs: Any
+    ) -> list[Any]:
+        """Not supported: sub-environments share their group's state."""
+        raise NotImplementedError("BatchedVecEnv sub-environments have no methods of their own")
+
+    def env_is_wrapped(self, wrapper_class: type[gym.Wrapper], indices: VecEnvIndices = None) -> list[bool]:
+        """``False`` for every sub-environment (no Gymnasium wrappers; ``episode`` is built in)."""
+        return [False for _ in self._get_indices(indices)]
+
+    def _group_of(self, i: int) -> Any:
+        return self.groups[int(np.searchsorted(self._bounds, i, side="right")) - 1]

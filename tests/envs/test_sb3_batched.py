@@ -1,0 +1,85 @@
+"""The stable-baselines3 adapter of the native vector envs: SB3's autoreset, Monitor's infos, PPO."""
+
+from __future__ import annotations
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+pytest.importorskip("stable_baselines3")
+
+from realistic_indoor.agents.rl import ppo_preset
+from realistic_indoor.agents.rl.batched_vec_env import BatchedVecEnv
+from realistic_indoor.agents.rl.envs import make_vec_env
+
+KEYS = ("scan", "local_map", "velocity")
+
+
+def _venv(n: int = 3, max_steps: int = 5, **kwargs) -> BatchedVecEnv:
+    envs = gym.make_vec(
+        "OfficeExplore-v0", num_envs=n, area_m2=300.0, max_steps=max_steps, action_type="discrete", **kwargs
+    )
+    return BatchedVecEnv([envs], KEYS)
+
+
+def test_batched_vec_env__resets_in_the_same_step_with_terminal_observation_and_episode():
+    venv = _venv()
+    venv.seed(0)
+    obs = venv.reset()
+    assert set(obs) == set(KEYS) and obs["scan"].shape == (3, 109)
+    for _ in range(5):
+        obs, reward, done, infos = venv.step(np.array([1, 1, 1]))
+    assert reward.dtype == np.float32 and done.all()
+    for k, info in enumerate(infos):
+        assert info["TimeLimit.truncated"] and info["episode"]["l"] == 5
+        assert set(info["terminal_observation"]) == set(KEYS)
+        assert not np.array_equal(info["terminal_observation"]["local_map"], obs["local_map"][k])
+    assert (obs["velocity"] == 0).all()  # the new episodes' first observations: at rest
+    obs, _, done, infos = venv.step(np.array([1, 1, 1]))
+    assert not done.any() and all("episode" not in i for i in infos)  # no second reset next step
+
+
+def test_batched_vec_env__restart_leaves_other_sub_envs_as_they_are():
+    envs = gym.make_vec("OfficeExplore-v0", num_envs=2, area_m2=300.0)
+    envs.reset(seed=1)
+    obs, *_ = envs.step(np.array([[1.0, 0.3], [1.0, -0.3]], dtype=np.float32))
+    again = envs.restart(np.array([0]))
+    assert np.array_equal(again["scan"][1], obs["scan"][1])
+    assert np.array_equal(again["pose"][1], obs["pose"][1])
+    assert np.allclose(again["pose"][0], 0.0) and np.allclose(again["velocity"][0], 0.0)
+
+
+def test_batched_vec_env__same_seed_same_rollout():
+    def rollout():
+        venv = _venv(max_steps=4)
+        venv.seed(3)
+        out = [venv.reset()["scan"]]
+        for a in range(10):
+            out.append(venv.step(np.full(3, a % 6))[0]["scan"])
+        return np.stack(out)
+
+    assert np.array_equal(rollout(), rollout())
+
+
+def test_make_vec_env__batched_mixes_the_ids_in_one_vec_env():
+    config = ppo_preset("smoke", vec_env="batched", n_envs=4)
+    venv = make_vec_env(config)
+    assert isinstance(venv, BatchedVecEnv) and venv.num_envs == 4
+    assert [g.num_envs for g in venv.groups] == [2, 1, 1]  # office, school, house in turn
+    obs = venv.reset()
+    assert obs["local_map"].shape == (4, 1, 64, 64)
+    venv.close()
+
+
+def test_ppo__learns_a_few_hundred_steps_on_the_batched_vec_env(request):
+    import torch
+    from stable_baselines3 import PPO
+
+    threads = torch.get_num_threads()
+    torch.set_num_threads(1)
+    request.addfinalizer(lambda: torch.set_num_threads(threads))
+    venv = _venv(n=4, max_steps=50)
+    model = PPO("MultiInputPolicy", venv, n_steps=64, batch_size=64, n_epochs=1, seed=0, device="cpu")
+    model.learn(total_timesteps=512)
+    assert model.num_timesteps >= 512
+    assert len(model.ep_info_buffer) >= 4  # Monitor-like episode records reached SB3

@@ -57,7 +57,7 @@ class BlockStyle:
     through_hall_p: float = 0.3
     corridor_scale: float = 1.0
     doors_per_room: int = 3
-    corridor_cuts: float = 1.25
+    corridor_cuts: float = 1.0
     max_axes_ratio: float = 1.6
     suites: bool = True
     max_bar_m: float = 90.0
@@ -70,8 +70,8 @@ OFFICE_BLOCKS = BlockStyle(
     core_scale=(1.6, 2.4),
     section_m=(30.0, 55.0),
     step_p=0.6,
-    step_m=(1.0, 3.0),
-    notch_p=0.3,
+    step_m=(1.0, 4.0),
+    notch_p=0.5,
     core_hall_p=0.3,
     compositions={"I": 0.75, "L": 0.15, "T": 0.1},
 )
@@ -88,7 +88,6 @@ SCHOOL_BLOCKS = BlockStyle(
     court_p=0.35,
     core_hall_p=0.3,
     corridor_scale=0.8,
-    corridor_cuts=1.0,
     compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 from dataclasses import dataclass
 
@@ -223,9 +224,10 @@ def length_for_area(section: Section, guess: int, area: int) -> int:
     """The block length whose painted floor area is nearest ``area`` (units).
 
     The area grows with the length (in steps, where a hall or a strip's piece appears), so the
-    length is bracketed from the guess and then found by bisection.
+    length is bracketed from the guess and then found by bisection. Each length is painted once.
     """
 
+    @functools.cache
     def painted(length: int) -> int:
         return paint_block(section, length).area
 

@@ -5,12 +5,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["OUTSIDE", "Door"]
-
-OUTSIDE = None
-"""Value of :attr:`Door.room_b` for an exterior door (an entrance)."""
+__all__ = ["DEFAULT_DOOR_WIDTH_M", "Door"]
 
 DEFAULT_DOOR_WIDTH_M = 0.9
+"""Width of a doorway whose plan gives none (m)."""
 
 
 @dataclass(frozen=True)

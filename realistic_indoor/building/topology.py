@@ -6,12 +6,12 @@ from typing import TYPE_CHECKING
 
 import networkx as nx
 
+from realistic_indoor.building.labels import OUTSIDE
+
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
-__all__ = ["OUTSIDE_NODE", "building_graph"]
-
-OUTSIDE_NODE = "outside"
+__all__ = ["building_graph"]
 
 
 def building_graph(building: Building, include_outside: bool = False) -> nx.MultiGraph:
@@ -20,11 +20,11 @@ def building_graph(building: Building, include_outside: bool = False) -> nx.Mult
     for r in building.rooms:
         g.add_node(r.id, label=r.label, function=r.function, area=r.area)
     if include_outside:
-        g.add_node(OUTSIDE_NODE, label=None, function="outside", area=0.0)
+        g.add_node(OUTSIDE, label=None, function=OUTSIDE, area=0.0)
     for d in building.doors:
         if d.room_b is None:
             if include_outside:
-                g.add_edge(d.room_a, OUTSIDE_NODE, key=d.id, width_m=d.width_m)
+                g.add_edge(d.room_a, OUTSIDE, key=d.id, width_m=d.width_m)
         else:
             g.add_edge(d.room_a, d.room_b, key=d.id, width_m=d.width_m)
     return g

@@ -11,10 +11,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from realistic_indoor.building.labels import ROOM_LABELS, SemanticLabel
+from realistic_indoor.building.labels import OUTSIDE, ROOM_LABELS, SemanticLabel
 from realistic_indoor.errors import RealisticIndoorError
 from realistic_indoor.generator.doors import RULES, add_door, door_fits, exterior_walls, open_between
-from realistic_indoor.models.building_model import OUTSIDE
+from realistic_indoor.generator.plan import C, H
 
 if TYPE_CHECKING:
     import numpy as np
@@ -23,8 +23,6 @@ if TYPE_CHECKING:
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["break_mazes", "connect_circulation", "connect_rooms", "ensure_reachable"]
-
-C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
 
 
 def connect_circulation(plan: Plan, only: set[int] | None = None) -> None:

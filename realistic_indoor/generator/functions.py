@@ -5,9 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.building.labels import CORE_FUNCTIONS, SemanticLabel
 from realistic_indoor.generator.doors import exterior_walls
-from realistic_indoor.validator.connectivity import CORE_FUNCTIONS
+from realistic_indoor.generator.plan import C
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -18,8 +18,6 @@ if TYPE_CHECKING:
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["FunctionRoles", "assign_functions", "draw_function"]
-
-C = SemanticLabel.CORRIDOR
 
 
 def draw_function(

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from realistic_indoor.building.labels import OUTSIDE
 from realistic_indoor.generator.connect import (
     break_mazes,
     connect_circulation,
@@ -222,7 +223,7 @@ def _entrances(
     doors to the outside the model's.
     """
     placed = False
-    p_side = min(1.0, model.connection(H, "outside") * model.stats(H).doors_mean)
+    p_side = min(1.0, model.connection(H, OUTSIDE) * model.stats(H).doors_mean)
     for i, r in enumerate(plan.rooms):
         if r.role not in ("lobby", "hall") or (i != lobby and rng.random() >= p_side):
             continue

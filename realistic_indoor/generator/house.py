@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, ClassVar
 
-from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.building.labels import OUTSIDE, SemanticLabel
 from realistic_indoor.errors import RealisticIndoorError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
 from realistic_indoor.generator.connect import break_mazes, connect_circulation, ensure_reachable
@@ -24,7 +24,7 @@ from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.typed import model_params
 from realistic_indoor.generator.wings.bays import DOOR_NEED
 from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
-from realistic_indoor.models.building_model import OUTSIDE, BuildingTypeModel, default_model
+from realistic_indoor.models.building_model import BuildingTypeModel, default_model
 
 if TYPE_CHECKING:
     import numpy as np

@@ -10,10 +10,10 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from realistic_indoor.building import Building, Door, Room, SemanticLabel
+from realistic_indoor.building import CIRCULATION_LABELS, Building, Door, Room, SemanticLabel
 from realistic_indoor.generator.geometry import Contact, Rect, contacts_by_pair, outline, to_metres
 
-__all__ = ["CIRCULATION", "Plan", "PlanDoor", "PlanRoom", "build_door"]
+__all__ = ["B", "C", "H", "M", "Plan", "PlanDoor", "PlanRoom", "S", "build_door"]
 
 C, H, S, M, B = (
     SemanticLabel.CORRIDOR,
@@ -23,9 +23,6 @@ C, H, S, M, B = (
     SemanticLabel.BIG,
 )
 """Short names of the semantic labels, as in the paper (C, H, S, M, B)."""
-
-CIRCULATION = (C, H)
-"""Labels of the spaces people walk through to reach rooms."""
 
 
 @dataclass
@@ -67,7 +64,7 @@ class PlanRoom:
     @property
     def is_circulation(self) -> bool:
         """Whether the room is a corridor or a hall."""
-        return self.label in CIRCULATION
+        return self.label in CIRCULATION_LABELS
 
 
 @dataclass

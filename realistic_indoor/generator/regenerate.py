@@ -20,7 +20,7 @@ from realistic_indoor.generator.connect import (
 from realistic_indoor.generator.doors import RULES, add_exterior_door
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
 from realistic_indoor.generator.geometry import UNITS_PER_M, Rect, contact, outline, to_metres
-from realistic_indoor.generator.plan import Plan, PlanDoor, PlanRoom, build_door
+from realistic_indoor.generator.plan import C, Plan, PlanDoor, PlanRoom, build_door
 from realistic_indoor.generator.wings.bays import BayContext, Budget, subdivide
 from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
 from realistic_indoor.generator.wings.paint import Bay
@@ -31,8 +31,6 @@ if TYPE_CHECKING:
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["regenerate", "select_rooms"]
-
-C = SemanticLabel.CORRIDOR
 
 
 def select_rooms(

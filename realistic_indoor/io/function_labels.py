@@ -13,18 +13,14 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from realistic_indoor.building.labels import SemanticLabel, parse_label
+from realistic_indoor.building.labels import SemanticLabel, normalise_function, parse_label
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["LabelMap", "default_label_map", "load_label_map", "normalise_function", "semantic_label_for"]
+__all__ = ["LabelMap", "default_label_map", "load_label_map", "semantic_label_for"]
 
 LabelMap = dict[str, SemanticLabel]
-"""Functional label (normalised, see :func:`normalise_function`) -> semantic label."""
-
-
-def normalise_function(text: object) -> str:
-    """A functional label in the project's spelling: ``"SHARED_OFFICE"`` -> ``"shared office"``."""
-    return " ".join(str(text).replace("_", " ").lower().split())
+"""Functional label (normalised, see :func:`~realistic_indoor.building.labels.normalise_function`)
+-> semantic label."""
 
 
 @lru_cache(maxsize=1)

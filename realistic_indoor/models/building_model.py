@@ -18,7 +18,6 @@ if TYPE_CHECKING:
     import numpy as np
 
 __all__ = [
-    "OUTSIDE",
     "REAL_MODEL_TYPES",
     "BuildingTypeModel",
     "LabelStats",
@@ -26,9 +25,6 @@ __all__ = [
     "default_model",
     "real_model",
 ]
-
-OUTSIDE = "outside"
-"""Key of :attr:`BuildingTypeModel.connections` for exterior doors."""
 
 
 @dataclass(frozen=True)
@@ -87,7 +83,7 @@ class BuildingTypeModel:
         name: The type's name (``"office"``, ``"school"``, ``"house"``, or a user's ``"hospital"``).
         labels: Statistics of each semantic label (every label present).
         connections: Per semantic label, the fraction of its doorways that lead to rooms of each
-            label (keys are label values, plus :data:`OUTSIDE` for exterior doors).
+            label (keys are label values, plus :data:`~realistic_indoor.building.labels.OUTSIDE` for exterior doors).
         functions: Per semantic label, the relative frequency of each functional label.
         structures: Frequencies of the recurring local structures.
         source: Where the numbers come from, in words.

@@ -7,9 +7,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from realistic_indoor.building.labels import ROOM_LABELS, BuildingType, SemanticLabel
+from realistic_indoor.building.labels import (
+    OUTSIDE,
+    ROOM_LABELS,
+    BuildingType,
+    SemanticLabel,
+    normalise_function,
+)
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.models.building_model import OUTSIDE, BuildingTypeModel, LabelStats, LocalStructures
+from realistic_indoor.models.building_model import BuildingTypeModel, LabelStats, LocalStructures
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -36,7 +42,7 @@ def fit_model(
         buildings: The plans (with semantic labels; infer them first where they lack them).
         name: The type's name (default: the plans' common building type, else ``"unknown"``).
         skip_misscaled: Leave plans whose scale looks wrong out of the area statistics (see
-            :func:`realistic_indoor.validator.scale.scale_check`); their scale-free statistics
+            :func:`realistic_indoor.models.scale.scale_check`); their scale-free statistics
             (shares, doors, axes ratios, connections) still count.
 
     Returns:
@@ -71,7 +77,7 @@ def fit_model(
 
 
 def _well_scaled(plans: list[Building]) -> list[Building]:
-    from realistic_indoor.validator.scale import scale_check
+    from realistic_indoor.models.scale import scale_check
 
     kept = [b for b in plans if scale_check(b) is None]
     return kept or plans
@@ -128,8 +134,6 @@ def _connections(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]
 
 
 def _functions(plans: list[Building]) -> dict[SemanticLabel, dict[str, float]]:
-    from realistic_indoor.validator.connectivity import normalise_function
-
     counts: dict[SemanticLabel, Counter] = {lab: Counter() for lab in SemanticLabel}
     for b in plans:
         for r in b.rooms:

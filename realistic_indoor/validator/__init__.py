@@ -15,6 +15,7 @@
 See ``docs/validator.md`` for every definition.
 """
 
+from realistic_indoor.models.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.compare import Comparison, SetReport, compare_sets
 from realistic_indoor.validator.connectivity import Connectivity, connectivity, room_mazes, set_connectivity
 from realistic_indoor.validator.features import RoomFeatures, all_room_features, room_features
@@ -22,7 +23,6 @@ from realistic_indoor.validator.label_inference import infer_labels, lacks_label
 from realistic_indoor.validator.plan_sets import PlanSet, load_plan_set
 from realistic_indoor.validator.reference import Reference, fitted_reference, paper_reference
 from realistic_indoor.validator.report import render_comparison
-from realistic_indoor.validator.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.score import RealismScore, ScoreConfig, realism_score
 from realistic_indoor.validator.tables import label_table, render_label_tables
 from realistic_indoor.validator.two_sample import TwoSampleResult, two_sample_test

@@ -10,12 +10,12 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import BuildingType, SemanticLabel, parse_building_type
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
+from realistic_indoor.models.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.building_measures import BuildingMeasures, building_measures, measure_summary
 from realistic_indoor.validator.connectivity import set_connectivity
 from realistic_indoor.validator.label_inference import infer_labels, lacks_labels
 from realistic_indoor.validator.plan_sets import PlanSet, SkippedPlanWarning, plan_problem
 from realistic_indoor.validator.reference import Reference, fitted_reference, paper_reference
-from realistic_indoor.validator.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.score import RealismScore, ScoreConfig, score_statistics
 from realistic_indoor.validator.tables import label_table
 

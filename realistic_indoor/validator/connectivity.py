@@ -7,7 +7,7 @@ gathers them into a :class:`Connectivity` record whose counts add up over a set 
 Definitions (doors are counted as the plan gives them; an exterior door leads to "outside"):
 
 - *core rooms*: rooms whose functional label is the building type's core function
-  (:data:`CORE_FUNCTIONS`: offices in offices, classrooms in schools, bedrooms in houses).
+  (:data:`~realistic_indoor.building.labels.CORE_FUNCTIONS`: offices in offices, classrooms in schools, bedrooms in houses).
 - a room *touches a corridor* when at least one of its doors leads to a corridor.
 - *ordinary rooms*: small, medium and big rooms (not corridors or halls).
 - an ordinary room is *connected only to corridors* when it has at least one door and every
@@ -36,7 +36,12 @@ from typing import TYPE_CHECKING
 import networkx as nx
 import numpy as np
 
-from realistic_indoor.building.labels import ROOM_LABELS, BuildingType, SemanticLabel, parse_building_type
+from realistic_indoor.building.labels import (
+    CIRCULATION_LABELS,
+    ROOM_LABELS,
+    SemanticLabel,
+    is_core_function,
+)
 
 if TYPE_CHECKING:
     from collections.abc import Collection, Iterable, Sequence
@@ -45,7 +50,6 @@ if TYPE_CHECKING:
 
 __all__ = [
     "CONNECTIVITY_METRICS",
-    "CORE_FUNCTIONS",
     "MAZE_MIN_ROOMS",
     "Connectivity",
     "ConnectivityMetric",
@@ -54,8 +58,6 @@ __all__ = [
     "corridors_only_to_corridors",
     "dead_end_corridors",
     "indirect_rooms",
-    "is_core_function",
-    "normalise_function",
     "path_lengths",
     "room_mazes",
     "rooms_only_to_corridors",
@@ -63,29 +65,8 @@ __all__ = [
     "set_connectivity",
 ]
 
-CORE_FUNCTIONS: dict[BuildingType, frozenset[str]] = {
-    BuildingType.OFFICE: frozenset({"office", "office room", "shared office", "executive office"}),
-    BuildingType.SCHOOL: frozenset({"classroom", "class room"}),
-    BuildingType.HOUSE: frozenset({"bedroom", "bed room"}),
-    BuildingType.UNKNOWN: frozenset(),
-}
-"""Functional labels (normalised, see :func:`normalise_function`) that are each type's core
-function: the rooms the building exists for."""
-
 MAZE_MIN_ROOMS = 3
 """Fewest ordinary rooms reachable only through each other that make a room maze."""
-
-_CIRCULATION = (SemanticLabel.CORRIDOR, SemanticLabel.HALL)
-
-
-def normalise_function(name: str) -> str:
-    """A functional label in canonical form: lower case, ``_``/``-`` as spaces, single spaces."""
-    return " ".join(str(name).lower().replace("_", " ").replace("-", " ").split())
-
-
-def is_core_function(function: str, building_type: BuildingType | str) -> bool:
-    """Whether ``function`` is the core function of ``building_type`` (see :data:`CORE_FUNCTIONS`)."""
-    return normalise_function(function) in CORE_FUNCTIONS[parse_building_type(building_type)]
 
 
 def _neighbour_labels(b: Building, room_id: str) -> list[SemanticLabel | None]:
@@ -146,7 +127,7 @@ def corridors_only_to_corridors(b: Building) -> list[str]:
 
 def _is_gateway(b: Building, room_id: str) -> bool:
     """Whether a room has a door to a corridor, a hall or outside."""
-    return any(lab is None or lab in _CIRCULATION for lab in _neighbour_labels(b, room_id))
+    return any(lab is None or lab in CIRCULATION_LABELS for lab in _neighbour_labels(b, room_id))
 
 
 def indirect_rooms(b: Building) -> list[str]:
@@ -395,10 +376,10 @@ def connectivity(b: Building) -> Connectivity:
         buildings=1,
         core_rooms=len(core),
         core_touching_corridor=len(rooms_touching_corridor(b, core)),
-        core_touching_circulation=len(rooms_touching_corridor(b, core, _CIRCULATION)),
+        core_touching_circulation=len(rooms_touching_corridor(b, core, CIRCULATION_LABELS)),
         ordinary_rooms=len(_ordinary_rooms(b)),
         only_to_corridors=len(rooms_only_to_corridors(b)),
-        only_to_circulation=len(rooms_only_to_corridors(b, _CIRCULATION)),
+        only_to_circulation=len(rooms_only_to_corridors(b, CIRCULATION_LABELS)),
         indirect_rooms=len(indirect_rooms(b)),
         mazes=len(mazes),
         maze_rooms=sum(len(m) for m in mazes),

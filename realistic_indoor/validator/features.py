@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from realistic_indoor.building.labels import SemanticLabel
+from realistic_indoor.building.labels import CIRCULATION_LABELS, ROOM_LABELS, SemanticLabel
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -40,8 +40,7 @@ class RoomFeatures:
 
     def vector(self) -> tuple[float, ...]:
         """``(a, rt, d, l_s, l_m, l_b, l_c, l_h)`` as floats, in the paper's order."""
-        order = (SemanticLabel.SMALL, SemanticLabel.MEDIUM, SemanticLabel.BIG)
-        order += (SemanticLabel.CORRIDOR, SemanticLabel.HALL)
+        order = (*ROOM_LABELS, *CIRCULATION_LABELS)
         return (self.area, self.axes_ratio, float(self.doors), *(float(self.doors_to[k]) for k in order))
 
 

@@ -22,9 +22,15 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.building import Building
-from realistic_indoor.building.labels import BuildingType, SemanticLabel, parse_building_type
+from realistic_indoor.building.labels import (
+    INFERRED,
+    BuildingType,
+    SemanticLabel,
+    labels_inferred,
+    normalise_function,
+    parse_building_type,
+)
 from realistic_indoor.building.room import Room
-from realistic_indoor.validator.connectivity import normalise_function
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
@@ -52,9 +58,6 @@ HALL_FUNCTIONS = frozenset({"hall", "lobby", "entrance", "entrance hall", "foyer
 
 UNKNOWN_FUNCTIONS = frozenset({"", "unknown", "none", "room", "space", "unlabelled", "unlabeled"})
 """Functional labels that say nothing about a room's use."""
-
-INFERRED = "inferred"
-"""Value of ``metadata["semantic_labels"]`` on a building whose labels this module inferred."""
 
 
 @dataclass(frozen=True)
@@ -185,8 +188,3 @@ def lacks_labels(building: Building) -> bool:
     if building.metadata.get("semantic_labels") == "missing":
         return True
     return len(building.rooms) >= 3 and len({r.label for r in building.rooms}) == 1
-
-
-def labels_inferred(building: Building) -> bool:
-    """Whether the building's semantic labels were inferred by :func:`infer_labels`."""
-    return building.metadata.get("semantic_labels") == INFERRED

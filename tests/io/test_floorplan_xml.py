@@ -8,11 +8,7 @@ from realistic_indoor.building import BuildingType, SemanticLabel
 from realistic_indoor.errors import ConfigError, PlanFormatError
 from realistic_indoor.io import load, save
 from realistic_indoor.io.floorplan_xml import read, write
-from realistic_indoor.io.function_labels import (
-    load_label_map,
-    normalise_function,
-    semantic_label_for,
-)
+from realistic_indoor.io.function_labels import load_label_map, semantic_label_for
 
 # A plan in pixels, y down, 10 px = 50 cm (0.05 m/px): office A (200 x 100 px = 10 m x 5 m) left
 # of corridor B (100 x 100 px), joined by a zero-length portal at (300, 150) on their shared wall.
@@ -314,11 +310,6 @@ def test_label_map__bad_value_and_bad_file_are_config_errors(tmp_path):
 def test_label_map__unknown_function_says_how_to_add_it():
     with pytest.raises(ConfigError, match=r"unknown functional label 'boiler room'.*label_map"):
         semantic_label_for("BOILER ROOM")
-
-
-def test_normalise_function():
-    assert normalise_function("  SHARED_OFFICE ") == "shared office"
-    assert normalise_function("Conference   Room") == "conference room"
 
 
 # -- bad input ------------------------------------------------------------------------------

@@ -10,7 +10,6 @@ from realistic_indoor.validator.connectivity import (
     corridors_only_to_corridors,
     dead_end_corridors,
     indirect_rooms,
-    is_core_function,
     path_lengths,
     room_mazes,
     rooms_only_to_corridors,
@@ -26,13 +25,6 @@ def test_fixture__maze_office_is_a_valid_building(maze_office):
 def test_core_rooms__offices_of_an_office(maze_office):
     assert core_rooms(maze_office) == ["o1", "o2", "o3", "o4", "o5"]
     assert rooms_touching_corridor(maze_office, core_rooms(maze_office)) == ["o1", "o2", "o3"]
-
-
-def test_is_core_function__normalises_case_and_separators():
-    assert is_core_function("Shared_Office", "office")
-    assert is_core_function("CLASSROOM", "school")
-    assert not is_core_function("classroom", "office")
-    assert not is_core_function("office", "unknown")
 
 
 def test_rooms_only_to_corridors__a_door_to_another_room_disqualifies(maze_office):

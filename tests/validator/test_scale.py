@@ -1,7 +1,7 @@
 import pytest
 
+from realistic_indoor.models.scale import expected_room_area, scale_check
 from realistic_indoor.validator.label_inference import infer_labels
-from realistic_indoor.validator.scale import expected_room_area, scale_check
 
 
 def test_scale_check__plausible_plan_is_not_flagged(maze_office):

@@ -14,6 +14,7 @@ import numpy as np
 from realistic_indoor.building import Building, BuildingType, Door, Room, SemanticLabel, parse_label
 from realistic_indoor.building.check import WALL_TOLERANCE_M
 from realistic_indoor.building.door import DEFAULT_DOOR_WIDTH_M
+from realistic_indoor.building.labels import normalise_function
 from realistic_indoor.errors import ConfigError, PlanFormatError
 from realistic_indoor.io.floorplan.consistency import (
     REACH_M,
@@ -28,7 +29,7 @@ from realistic_indoor.io.floorplan.overlaps import cut_overlaps
 from realistic_indoor.io.floorplan.portals import DoorGeometry, door_between, door_from_copies
 from realistic_indoor.io.floorplan.repairs import RepairLog
 from realistic_indoor.io.floorplan.xmlfile import parse_root, points, read_scale
-from realistic_indoor.io.function_labels import load_label_map, normalise_function, semantic_label_for
+from realistic_indoor.io.function_labels import load_label_map, semantic_label_for
 
 __all__ = ["read"]
 

@@ -7,7 +7,7 @@ import math
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from realistic_indoor.building import Building, Door, Room, SemanticLabel
+from realistic_indoor.building import CIRCULATION_LABELS, Building, Door, Room
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path
 
@@ -77,7 +77,7 @@ def _scale() -> ET.Element:
 def _type_letter(room: Room) -> str:
     if room.function in ENTRY_FUNCTIONS:
         return "E"
-    return "C" if room.label in (SemanticLabel.CORRIDOR, SemanticLabel.HALL) else "R"
+    return "C" if room.label in CIRCULATION_LABELS else "R"
 
 
 def _space(room: Room, doors: tuple[Door, ...], px, used: set[str]) -> ET.Element:

@@ -15,8 +15,13 @@ from dataclasses import dataclass
 from statistics import median
 from typing import TYPE_CHECKING
 
-from realistic_indoor.building.labels import ROOM_LABELS, BuildingType, SemanticLabel, parse_building_type
-from realistic_indoor.validator.label_inference import labels_inferred
+from realistic_indoor.building.labels import (
+    ROOM_LABELS,
+    BuildingType,
+    SemanticLabel,
+    labels_inferred,
+    parse_building_type,
+)
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building

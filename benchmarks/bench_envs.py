@@ -146,12 +146,10 @@ def _table(title: str, key: str, rows: list[tuple[str, str, dict]], args: argpar
 
 def _reset_split_table(env_id: str, args: argparse.Namespace) -> None:
     """Median time to generate a new building and to build its world, side by side (ms)."""
-    from realistic_indoor.envs.source import building_source
-
     env = gym.make(env_id)
     config = env.unwrapped.config
     env.close()
-    generate = building_source(config)
+    generate = config.source.generator()
     generate(np.random.default_rng(args.seed))  # warm the kernels and caches
     gen_ms, build_ms, areas = [], [], []
     for i in range(args.resets):

@@ -23,9 +23,12 @@ _LAZY = {
     "ExploreEnv": "realistic_indoor.envs.explore",
     "SearchEnv": "realistic_indoor.envs.search",
     "EnvConfig": "realistic_indoor.envs.config",
-    "BUILDING_TYPES": "realistic_indoor.envs.config",
     "RewardWeights": "realistic_indoor.envs.rewards",
+    "BuildingSource": "realistic_indoor.envs.source",
+    "GeneratedBuildings": "realistic_indoor.envs.source",
+    "CustomGenerator": "realistic_indoor.envs.source",
     "FixedBuilding": "realistic_indoor.envs.source",
+    "PlanFile": "realistic_indoor.envs.source",
     "RerunRecorder": "realistic_indoor.envs.recording",
     "record_rerun": "realistic_indoor.envs.recording",
 }

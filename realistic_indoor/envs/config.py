@@ -2,16 +2,22 @@
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, fields, replace
-from os import PathLike
-from pathlib import Path
 from typing import Any
 
-from realistic_indoor.building.building import Building
 from realistic_indoor.checks import require_int, require_range
 from realistic_indoor.envs.actions import ACTION_TYPES
 from realistic_indoor.envs.rewards import RewardWeights
+from realistic_indoor.envs.source import (
+    GENERATED_KEYWORDS,
+    SOURCE_KEYWORDS,
+    BuildingSource,
+    GeneratedBuildings,
+    as_source,
+    source_from_keywords,
+)
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.lidar import LidarConfig
 from realistic_indoor.sim.mapping import LocalMapConfig
@@ -19,11 +25,7 @@ from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
-__all__ = ["BUILDING_TYPES", "TASK_FIELDS", "EnvConfig", "require_task_fields"]
-
-BUILDING_TYPES = ("office", "school", "house", "random")
-"""Generators an environment can name in :attr:`EnvConfig.building_type`; ``"random"`` is the
-World-Generator-like baseline."""
+__all__ = ["TASK_FIELDS", "EnvConfig", "base_config", "require_task_fields"]
 
 TASK_FIELDS: dict[str, str] = {"victims": "search", "coverage_target": "explore"}
 """Fields of :class:`EnvConfig` that one task only uses: field name -> that task."""
@@ -42,19 +44,20 @@ _SUBCONFIGS = {
 class EnvConfig:
     """Everything that defines an exploration or search environment.
 
-    The building of each episode comes from the first of ``building``, ``plan_path`` and
-    ``generator`` that is set, else from the generator named by ``building_type``.
+    Where each episode's building comes from is one field, ``source`` (see
+    :mod:`realistic_indoor.envs.source`). The keywords that chose it before it existed are still
+    accepted by the constructor and :meth:`replace`, and mapped onto it: ``building_type``,
+    ``area_m2`` and ``generator_params`` set a :class:`GeneratedBuildings` source's type, area and
+    options; ``generator``, ``building`` or ``plan_path`` replaces the source by a
+    :class:`~realistic_indoor.envs.source.CustomGenerator`,
+    :class:`~realistic_indoor.envs.source.FixedBuilding` or
+    :class:`~realistic_indoor.envs.source.PlanFile`.
 
     Attributes:
-        building_type: Generator drawing a new building each episode: ``"office"``,
-            ``"school"``, ``"house"`` or ``"random"`` (the World-Generator-like baseline).
-        area_m2: Floor area asked of the generator (m2); ``None`` for its default.
-        generator_params: More keyword arguments for the named generator.
-        generator: Any callable ``rng -> Building`` (picklable, for vector environments); it
-            replaces the named generator.
-        building: One fixed building for every episode (e.g. a real plan).
-        plan_path: A plan file (any format :func:`realistic_indoor.io.load` reads), read once
-            when the environment is built; the building of every episode.
+        source: Where each episode's building comes from: a
+            :data:`~realistic_indoor.envs.source.BuildingSource`, or a shorthand for one (a
+            building type name such as ``"school"``, a ``Building``, a plan file's path, a
+            callable ``rng -> Building``); default: generated offices of the default area.
         world: Raster resolution (m per cell, also the robot's map resolution), wall
             thickness (m) and start clearance (m).
         robot: Disc radius (m), speed and turn limits (m/s, rad/s), accelerations, control
@@ -75,12 +78,7 @@ class EnvConfig:
             (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`).
     """
 
-    building_type: str = "office"
-    area_m2: float | None = None
-    generator_params: Mapping[str, Any] = field(default_factory=dict)
-    generator: Callable[..., Building] | None = None
-    building: Building | None = None
-    plan_path: str | Path | None = None
+    source: BuildingSource = field(default_factory=GeneratedBuildings)
     world: WorldConfig = field(default_factory=WorldConfig)
     robot: RobotConfig = field(default_factory=RobotConfig)
     lidar: LidarConfig = field(default_factory=LidarConfig)
@@ -92,13 +90,7 @@ class EnvConfig:
     action_type: str = "continuous"
 
     def __post_init__(self) -> None:
-        if self.building_type not in BUILDING_TYPES:
-            raise ConfigError(
-                f"EnvConfig.building_type: unknown building type {self.building_type!r}; "
-                f"valid types: {', '.join(BUILDING_TYPES)}"
-            )
-        if self.area_m2 is not None:
-            require_range("EnvConfig", "area_m2", self.area_m2, 0.0, float("inf"), "m2")
+        object.__setattr__(self, "source", as_source(self.source))
         if self.action_type not in ACTION_TYPES:
             raise ConfigError(
                 f"EnvConfig.action_type must be one of {', '.join(ACTION_TYPES)}, got {self.action_type!r}"
@@ -106,61 +98,94 @@ class EnvConfig:
         require_range("EnvConfig", "coverage_target", self.coverage_target, 0.0, 1.0, "")
         require_int("EnvConfig", "max_steps", self.max_steps, 1)
         self._check_types()
-        self._check_source()
 
     def _check_types(self) -> None:
         for name, cls in _SUBCONFIGS.items():
             value = getattr(self, name)
             if not isinstance(value, cls):
                 raise ConfigError(f"EnvConfig.{name} must be a {cls.__name__}, got {type(value).__name__}")
-        if not isinstance(self.generator_params, Mapping):
-            raise ConfigError(f"EnvConfig.generator_params must be a mapping, got {self.generator_params!r}")
-
-    def _check_source(self) -> None:
-        given = [n for n in ("building", "plan_path", "generator") if getattr(self, n) is not None]
-        if len(given) > 1:
-            raise ConfigError(
-                f"EnvConfig: give at most one building source, got {' and '.join(given)}; "
-                "building fixes one building, plan_path reads one, generator draws one per episode"
-            )
-        if self.building is not None and not isinstance(self.building, Building):
-            raise ConfigError(f"EnvConfig.building must be a Building, got {type(self.building).__name__}")
-        if self.plan_path is not None and not isinstance(self.plan_path, (str, PathLike)):
-            raise ConfigError(f"EnvConfig.plan_path must be a file path, got {self.plan_path!r}")
-        if self.generator is not None and not callable(self.generator):
-            raise ConfigError(
-                f"EnvConfig.generator must be a callable rng -> Building, got {self.generator!r}"
-            )
 
     def replace(self, **changes: Any) -> EnvConfig:
         """A copy with some fields changed (checked again).
 
         A sub-config (``world``, ``robot``, ``lidar``, ``local_map``, ``rewards``, ``victims``)
         may be given as a mapping of the fields to change in it, e.g.
-        ``replace(lidar={"n_beams": 64})``. Setting one building source (``building``,
-        ``plan_path`` or ``generator``) clears the others, so that a preset's source can be
-        overridden by any of them.
+        ``replace(lidar={"n_beams": 64})``. The older source keywords (``building_type``,
+        ``area_m2``, ``generator_params``, ``generator``, ``building``, ``plan_path``) change
+        ``source`` as the class docstring says.
 
         Raises:
-            ConfigError: If a field name is unknown or a value is invalid.
+            ConfigError: If a field name is unknown, a value is invalid, or the source is given
+                twice (``source`` with ``building``, say).
         """
-        known = {f.name for f in fields(self)}
+        known = {f.name for f in fields(self)} | set(_OLD_SOURCE_KEYWORDS)
         _require_known("EnvConfig", changes, known)
         for name, cls in _SUBCONFIGS.items():
             if isinstance(changes.get(name), Mapping):
                 current = getattr(self, name)
                 _require_known(cls.__name__, changes[name], {f.name for f in fields(cls)})
                 changes[name] = replace(current, **changes[name])
-        sources = {"building", "plan_path", "generator"}
-        if sources & {k for k, v in changes.items() if v is not None}:
-            changes = {**dict.fromkeys(sources), **changes}
+        old = {k: changes.pop(k) for k in _OLD_SOURCE_KEYWORDS if k in changes}
+        if old:
+            base = as_source(changes["source"]) if "source" in changes else self.source
+            changes["source"] = _apply_old_keywords(base, "source" in changes, old)
         return replace(self, **changes)
+
+
+_OLD_SOURCE_KEYWORDS = (*GENERATED_KEYWORDS, *SOURCE_KEYWORDS)
+
+
+def _accept_old_source_keywords(init: Callable[..., None]) -> Callable[..., None]:
+    """Wrap the dataclass constructor so that it maps the older source keywords onto ``source``."""
+
+    @functools.wraps(init)
+    def wrapped(self: EnvConfig, *args: Any, **kwargs: Any) -> None:
+        old = {k: kwargs.pop(k) for k in _OLD_SOURCE_KEYWORDS if k in kwargs}
+        init(self, *args, **kwargs)
+        if old:
+            explicit = "source" in kwargs or bool(args)
+            object.__setattr__(self, "source", _apply_old_keywords(self.source, explicit, old))
+
+    return wrapped
+
+
+def _apply_old_keywords(source: BuildingSource, explicit: bool, old: Mapping[str, Any]) -> BuildingSource:
+    """``source`` changed by the older keywords; ``explicit``: it was given in the same call."""
+    chosen = [k for k in (*SOURCE_KEYWORDS, "building_type") if old.get(k) is not None]
+    if explicit and chosen:
+        raise ConfigError(f"EnvConfig: give the building source once, got source and {chosen[0]}")
+    return source_from_keywords(source, old)
+
+
+EnvConfig.__init__ = _accept_old_source_keywords(EnvConfig.__init__)  # type: ignore[method-assign]
 
 
 def _require_known(owner: str, changes: Mapping[str, Any], known: set[str]) -> None:
     unknown = sorted(set(changes) - known)
     if unknown:
         raise ConfigError(f"{owner} has no field {unknown[0]!r}; fields: {', '.join(sorted(known))}")
+
+
+def base_config(config: EnvConfig | None, preset: str | None) -> EnvConfig:
+    """The configuration an environment starts from, before its keyword overrides.
+
+    Args:
+        config: A whole configuration; it wins over ``preset``.
+        preset: A registered id (``gym.make`` passes the id it makes); its configuration is
+            used when ``config`` is ``None``.
+
+    Raises:
+        ConfigError: If ``config`` is not an ``EnvConfig`` or ``preset`` is not a registered id.
+    """
+    if config is not None:
+        if not isinstance(config, EnvConfig):
+            raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
+        return config
+    if preset is None:
+        return EnvConfig()
+    from realistic_indoor.envs.presets import preset_config
+
+    return preset_config(preset)
 
 
 def require_task_fields(config: EnvConfig, task: str, named: Iterable[str] = ()) -> None:

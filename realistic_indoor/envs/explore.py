@@ -10,11 +10,10 @@ from gymnasium import spaces
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
-from realistic_indoor.envs.config import EnvConfig, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.rewards import reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
-from realistic_indoor.envs.source import building_source
 from realistic_indoor.errors import ConfigError
 
 __all__ = ["ExploreEnv"]
@@ -102,18 +101,22 @@ class ExploreEnv(gym.Env):
 
     ## Arguments
 
-    ``gym.make(id, **kwargs)`` and ``ExploreEnv(config, render_mode, **kwargs)`` take any field
-    of :class:`~realistic_indoor.envs.config.EnvConfig` as a keyword, overriding the preset:
+    ``gym.make(id, **kwargs)`` and ``ExploreEnv(config, render_mode, preset, **kwargs)`` take
+    any field of :class:`~realistic_indoor.envs.config.EnvConfig` as a keyword, overriding the
+    preset's configuration:
 
     | Parameter         | Type                 | Default     | Description                                   |
     |-------------------|----------------------|-------------|-----------------------------------------------|
-    | `config`          | `EnvConfig`          | preset      | the whole configuration                       |
+    | `config`          | `EnvConfig`          | preset      | the whole configuration (replaces the preset) |
     | `render_mode`     | `str` or `None`      | `None`      | `"rgb_array"`: a top view; `"human"`: it in a window |
-    | `building_type`   | `str`                | preset      | `"office"`, `"school"`, `"house"`, `"random"` |
+    | `preset`          | `str` or `None`      | the id      | registered id whose configuration is the base (`gym.make` passes it) |
+    | `source`          | `BuildingSource`     | preset      | where buildings come from: a building type (`"office"`, `"school"`, `"house"`, `"random"`), a `Building`, a plan file, an `rng -> Building` callable |
+    | `building_type`   | `str`                | preset      | older keyword: the source's building type      |
     | `area_m2`         | `float`              | generator's | floor area asked of the generator (m2)        |
-    | `generator`       | callable             | `None`      | any `rng -> Building` generator               |
-    | `building`        | `Building`           | `None`      | one fixed building for every episode          |
-    | `plan_path`       | path                 | `None`      | a plan file run as a fixed building           |
+    | `generator_params` | mapping             | `{}`        | more options of the named generator           |
+    | `generator`       | callable             | `None`      | older keyword: any `rng -> Building` generator |
+    | `building`        | `Building`           | `None`      | older keyword: one fixed building for every episode |
+    | `plan_path`       | path                 | `None`      | older keyword: a plan file run as a fixed building |
     | `world`           | `WorldConfig`        | 0.05 m      | raster (and map) resolution, wall thickness   |
     | `robot`           | `RobotConfig`        | 0.25 m disc | radius, limits, control rate (5 Hz), sub-steps |
     | `lidar`           | `LidarConfig`        | 109 beams   | field of view, beams, range (10 m), noise     |
@@ -160,12 +163,13 @@ class ExploreEnv(gym.Env):
     """The task, for the config fields only one task uses (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
 
     def __init__(
-        self, config: EnvConfig | None = None, render_mode: str | None = None, **overrides: Any
+        self,
+        config: EnvConfig | None = None,
+        render_mode: str | None = None,
+        preset: str | None = None,
+        **overrides: Any,
     ) -> None:
-        config = config if config is not None else EnvConfig()
-        if not isinstance(config, EnvConfig):
-            raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
-        self.config = config.replace(**overrides) if overrides else config
+        self.config = base_config(config, preset).replace(**overrides)
         require_task_fields(self.config, self.task, overrides)
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ConfigError(
@@ -173,7 +177,7 @@ class ExploreEnv(gym.Env):
             )
         self.render_mode = render_mode
         self.metadata = {**self.metadata, "render_fps": self.config.robot.control_hz}
-        self._source = building_source(self.config)
+        self._source = self.config.source.generator()
         self._sim = Simulation(self.config)
         self._actions = ActionMap(
             self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s

@@ -32,8 +32,11 @@ class EnvPreset(NamedTuple):
     Attributes:
         env_id: The id ``gym.make`` takes, e.g. ``"OfficeExplore-v0"``.
         entry_point: ``"module:Class"`` of the environment.
-        kwargs: Config fields the preset sets (the rest keep the environment's defaults);
-            plain values only, so registering imports nothing heavy.
+        kwargs: Config fields the preset sets (the rest keep the environment's defaults):
+            ``source`` (the building type) and ``max_steps``; plain values only, so
+            registering imports nothing heavy. (Gymnasium is given ``{"preset": env_id}``: the
+            environment starts from :func:`preset_config` and applies ``gym.make``'s keywords
+            to it, so they override the preset's.)
         max_episode_steps: The step limit (also ``kwargs["max_steps"]``).
         vector_entry_point: ``"module:Class"`` of the native vector environment that
             ``gym.make_vec`` returns, or ``None`` (Gymnasium's sync vector of single envs).
@@ -45,13 +48,18 @@ class EnvPreset(NamedTuple):
     max_episode_steps: int
     vector_entry_point: str | None = None
 
+    @property
+    def building_type(self) -> str:
+        """The generator of the preset's buildings (``"office"``, ..., ``"random"``)."""
+        return self.kwargs["source"]
+
 
 def _presets() -> dict[str, EnvPreset]:
     out = {}
     for task, entry_point in _ENTRY_POINTS.items():
         for building_type, max_steps in _MAX_STEPS[task].items():
             env_id = f"{building_type.capitalize()}{task}-v0"
-            kwargs = {"building_type": building_type, "max_steps": max_steps}
+            kwargs = {"source": building_type, "max_steps": max_steps}
             out[env_id] = EnvPreset(env_id, entry_point, kwargs, max_steps, _VECTOR_ENTRY_POINTS[task])
     return out
 
@@ -76,7 +84,7 @@ def preset_config(env_id: str, **overrides: Any):
 
     if env_id not in PRESETS:
         raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
-    config = EnvConfig().replace(**{**PRESETS[env_id].kwargs, **overrides})
+    config = EnvConfig(**PRESETS[env_id].kwargs).replace(**overrides)
     task = next(t for t in _ENTRY_POINTS if env_id.endswith(f"{t}-v0"))
     require_task_fields(config, task.lower(), overrides)
     return config

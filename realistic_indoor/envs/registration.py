@@ -21,7 +21,7 @@ def register_envs() -> None:
             gym.register(
                 id=preset.env_id,
                 entry_point=preset.entry_point,
-                kwargs=dict(preset.kwargs),
+                kwargs={"preset": preset.env_id},
                 max_episode_steps=preset.max_episode_steps,
                 vector_entry_point=preset.vector_entry_point,
             )

@@ -18,9 +18,8 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
-from realistic_indoor.envs.config import EnvConfig, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
-from realistic_indoor.envs.source import building_source
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import N_TERMS, RESET, SKIP, STEP, Batch, step_batch
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
@@ -58,8 +57,10 @@ class BatchedExploreEnv(VectorEnv):
 
     Args:
         num_envs: Number of sub-environments (robots).
-        config: The configuration (as :class:`ExploreEnv`); ``None`` for the defaults.
+        config: The configuration (as :class:`ExploreEnv`); ``None`` for the preset's.
         max_episode_steps: The registered step limit; sets ``max_steps`` when given.
+        preset: A registered id whose configuration is the base when ``config`` is not given
+            (``gym.make_vec`` passes it).
         **overrides: Fields of :class:`~realistic_indoor.envs.config.EnvConfig`.
 
     Raises:
@@ -73,18 +74,18 @@ class BatchedExploreEnv(VectorEnv):
         num_envs: int = 1,
         config: EnvConfig | None = None,
         max_episode_steps: int | None = None,
+        preset: str | None = None,
         **overrides: Any,
     ) -> None:
         if isinstance(num_envs, bool) or not isinstance(num_envs, int) or num_envs < 1:
             raise ConfigError(f"num_envs must be an integer >= 1, got {num_envs!r}")
-        config = config if config is not None else EnvConfig()
         if max_episode_steps is not None:
             overrides = {"max_steps": max_episode_steps, **overrides}
-        self.config = config.replace(**overrides) if overrides else config
+        self.config = base_config(config, preset).replace(**overrides)
         require_task_fields(self.config, "explore", overrides)
         self.num_envs = num_envs
         self.render_mode = None
-        self._source = building_source(self.config)
+        self._source = self.config.source.generator()
         self._actions = ActionMap(
             self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
         )

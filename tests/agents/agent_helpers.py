@@ -109,7 +109,7 @@ def small_env(env_id: str, max_steps: int = 40, **kwargs) -> gym.Env:
     import realistic_indoor.envs  # noqa: F401 - registers the ids
     from realistic_indoor.envs import PRESETS
 
-    building_type = PRESETS[env_id].kwargs["building_type"]
+    building_type = PRESETS[env_id].building_type
     if not {"generator", "building", "plan_path"} & set(kwargs):
         if generator_exists(building_type):
             kwargs.setdefault("area_m2", SMALL_AREAS_M2[building_type])

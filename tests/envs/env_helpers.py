@@ -60,6 +60,6 @@ def make_env(env_id: str, **kwargs):
 
     kwargs.setdefault("max_steps", 50)
     if not {"generator", "building", "plan_path"} & set(kwargs):
-        building_type = kwargs.get("building_type", PRESETS[env_id].kwargs["building_type"])
+        building_type = kwargs.get("building_type", PRESETS[env_id].building_type)
         kwargs.setdefault("area_m2", TEST_AREAS_M2[building_type])
     return gym.make(env_id, **kwargs)

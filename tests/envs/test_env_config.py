@@ -8,6 +8,7 @@ from env_helpers import ToyOffice, make_env
 
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
 from realistic_indoor.envs import EnvConfig, ExploreEnv, preset_config
+from realistic_indoor.envs.source import FixedBuilding, GeneratedBuildings
 from realistic_indoor.errors import ConfigError, PlanFormatError, RealisticIndoorError
 
 
@@ -45,7 +46,7 @@ def test_two_building_sources__are_rejected(toy_building):
 
 def test_override_of_the_source__replaces_the_preset_source(toy_building):
     config = preset_config("OfficeExplore-v0", generator=ToyOffice())
-    assert config.replace(building=toy_building).generator is None
+    assert config.replace(building=toy_building).source == FixedBuilding(toy_building)
 
 
 def test_missing_plan_file__raises_plan_format_error(tmp_path):
@@ -72,7 +73,7 @@ def test_step_before_reset__raises_reset_needed():
 def test_preset_config__is_the_registered_environment_config():
     env = gym.make("SchoolSearch-v0", max_steps=11, area_m2=900.0)
     assert env.unwrapped.config == preset_config("SchoolSearch-v0", max_steps=11, area_m2=900.0)
-    assert env.unwrapped.config.building_type == "school"
+    assert env.unwrapped.config.source == GeneratedBuildings("school", 900.0)
 
 
 def test_random_env__grid_size_in_generator_params_overrides_the_default_area():

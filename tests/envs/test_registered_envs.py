@@ -91,7 +91,7 @@ def test_env__truncates_exactly_at_the_step_limit(env_id):
 
 @pytest.mark.parametrize("env_id", ALL_IDS)
 def test_env__gym_make_vec_sync_and_async_agree(env_id):
-    area = TEST_AREAS_M2[PRESETS[env_id].kwargs["building_type"]]
+    area = TEST_AREAS_M2[PRESETS[env_id].building_type]
     results = {}
     for mode in ("sync", "async"):
         envs = gym.make_vec(env_id, num_envs=2, vectorization_mode=mode, area_m2=area, max_steps=10)

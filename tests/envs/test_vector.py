@@ -19,7 +19,7 @@ POSE_TOLERANCE_M = 0.05
 
 
 def _make(env_id: str = "OfficeExplore-v0", n: int = 3, **kwargs) -> BatchedExploreEnv:
-    area = TEST_AREAS_M2[PRESETS[env_id].kwargs["building_type"]]
+    area = TEST_AREAS_M2[PRESETS[env_id].building_type]
     return gym.make_vec(env_id, num_envs=n, area_m2=area, **kwargs)
 
 

@@ -65,7 +65,7 @@ def _env_spec(env_id: str, plan: EvalPlan) -> Any:
     if env_id not in PRESETS:
         raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
     kwargs: dict[str, Any] = {} if plan.max_steps is None else {"max_steps": plan.max_steps}
-    building_type = PRESETS[env_id].kwargs["building_type"]
+    building_type = PRESETS[env_id].building_type
     if plan.areas_m2 is not None and building_type in plan.areas_m2:
         kwargs["area_m2"] = plan.areas_m2[building_type]
     return EnvSpec(env_id, None, kwargs)

@@ -21,7 +21,7 @@ class EnvFactory:
         from realistic_indoor.envs import PRESETS
 
         self.env_id = env_id
-        building_type = PRESETS[env_id].kwargs["building_type"]
+        building_type = PRESETS[env_id].building_type
         self.kwargs: dict[str, Any] = {"max_steps": config.max_steps, "max_episode_steps": config.max_steps}
         if building_type in config.areas_m2:
             self.kwargs["area_m2"] = config.areas_m2[building_type]

@@ -22,7 +22,7 @@ import importlib
 from typing import Any
 
 _WHERE = {
-    "lidar": ("Lidar", "LidarConfig", "Scan"),
+    "lidar": ("Lidar", "LidarConfig", "Scan", "beam_offsets"),
     "mapping": (
         "MAPPED_FREE",
         "MAPPED_OCCUPIED",
@@ -66,6 +66,7 @@ __all__ = [
     "VictimSensor",
     "World",
     "WorldConfig",
+    "beam_offsets",
     "place_victims",
     "rasterize",
     "relative_polar",

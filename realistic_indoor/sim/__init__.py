@@ -22,6 +22,7 @@ import importlib
 from typing import Any
 
 _WHERE = {
+    "fields": ("distance_field",),
     "lidar": ("Lidar", "LidarConfig", "Scan", "beam_offsets"),
     "mapping": (
         "MAPPED_FREE",
@@ -67,6 +68,7 @@ __all__ = [
     "World",
     "WorldConfig",
     "beam_offsets",
+    "distance_field",
     "place_victims",
     "rasterize",
     "relative_polar",

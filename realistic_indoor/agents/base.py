@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
@@ -26,7 +25,8 @@ class RobotSpec:
 
     Attributes:
         lidar: The laser scanner (field of view, beams, range); scans come normalised by
-            ``lidar.max_range_m`` in ``obs["scan"]``.
+            ``lidar.max_range_m`` in ``obs["scan"]``, beam ``i`` along
+            :func:`~realistic_indoor.sim.lidar.beam_offsets` ``(lidar)[i]`` from the heading.
         robot: Disc radius (m), speed and turn limits (m/s, rad/s), control rate (Hz).
         victims: The victim sensor (range in m, field of view in rad) in search tasks; ``None``
             in exploration.
@@ -67,14 +67,6 @@ class RobotSpec:
     def dt_s(self) -> float:
         """Duration of one control step (s)."""
         return 1.0 / self.robot.control_hz
-
-    def beam_offsets_rad(self) -> np.ndarray:
-        """Directions of the laser beams relative to the heading (rad), right to left."""
-        c = self.lidar
-        if c.n_beams == 1:
-            return np.zeros(1)
-        full_circle = math.isclose(c.fov_rad, 2 * math.pi)
-        return np.linspace(-c.fov_rad / 2, c.fov_rad / 2, c.n_beams, endpoint=not full_circle)
 
     def action(self, v_m_s: float, w_rad_s: float) -> np.ndarray | int:
         """The action that commands ``(v m/s, w rad/s)`` (the nearest one if discrete)."""

@@ -26,6 +26,7 @@ from realistic_indoor.agents.reflexes import Reflexes
 from realistic_indoor.agents.victims import VictimTracker
 from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.lidar import beam_offsets
 
 __all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
 
@@ -139,7 +140,7 @@ class MapExplorer(Agent):
             raise ConfigError(f"config must be an ExplorerConfig, got {type(self.config).__name__}")
         c = self.config
         sensor = None if spec.victims is None else (spec.victims.sensor_range_m, spec.victims.sensor_fov_rad)
-        self.map = OwnMap(spec.beam_offsets_rad(), spec.lidar.max_range_m, c.map_resolution_m, sensor)
+        self.map = OwnMap(beam_offsets(spec.lidar), spec.lidar.max_range_m, c.map_resolution_m, sensor)
         self.victims = VictimTracker(spec.victims.sensor_range_m if spec.victims else 1.0)
         self.follower = PathFollower(spec.robot.max_speed_m_s, spec.robot.max_turn_rate_rad_s, c.follower)
         self.reflexes = Reflexes(spec, self.map, c.bump_half_width_m, c.stuck_steps, c.stuck_move_m)

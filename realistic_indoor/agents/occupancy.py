@@ -3,8 +3,9 @@
 The environment's observation holds only a small egocentric map image; a frontier explorer needs
 the whole building it has seen. :class:`OwnMap` builds it from what the robot senses: each laser
 scan (``obs["scan"]``) is rasterised at the odometry pose (``obs["pose"]``) by the simulator's
-:class:`~realistic_indoor.sim.mapping.RobotMap`, run on a window around the robot with no ground
-truth (every cell may be free), and merged into a grid that grows as the robot travels. The cell
+mapping rule (:class:`~realistic_indoor.sim.mapping.FreeSpaceMarker`, the fan
+:class:`~realistic_indoor.sim.mapping.RobotMap` marks, with no ground truth) on a window around
+the robot, and merged into a grid that grows as the robot travels. The cell
 each returned beam ends in is marked occupied. The map's frame is the odometry frame: the start
 pose at the origin, x along the start heading.
 """
@@ -16,10 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from realistic_indoor.sim.lidar import Scan
-from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, UNKNOWN, LocalMapConfig, RobotMap
-from realistic_indoor.sim.raster import FREE, WALL, OccupancyRaster
-from realistic_indoor.sim.raycast import RayHits
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, UNKNOWN, FreeSpaceMarker
 
 __all__ = ["FREE_CELL", "OCCUPIED_CELL", "UNKNOWN_CELL", "Box", "OwnMap"]
 
@@ -46,34 +44,20 @@ class Box(NamedTuple):
         return slice(self.r0, self.r1), slice(self.c0, self.c1)
 
 
-class _OpenWorld:
-    """A square world with no ground truth, for a :class:`RobotMap` used as a scan rasteriser."""
-
-    def __init__(self, n_cells: int, resolution_m: float) -> None:
-        self.raster = OccupancyRaster(np.full((n_cells, n_cells), FREE, np.uint8), resolution_m, (0.0, 0.0))
-        self.reachable = np.zeros((n_cells, n_cells), dtype=bool)
-
-
 class _Window:
     """Rasterises one scan (or one sensor's part of it) on a square window around the robot."""
 
     def __init__(self, reach_m: float, resolution_m: float, offsets_rad: np.ndarray) -> None:
         self.half = math.ceil(reach_m / resolution_m) + 2
         self.size = 2 * self.half
-        self.offsets = offsets_rad
-        self.map = RobotMap(
-            _OpenWorld(self.size, resolution_m), LocalMapConfig(size_px=1, resolution_m=resolution_m * 32)
-        )
+        self._marker = FreeSpaceMarker((self.size, self.size), resolution_m, offsets_rad)
 
     def free(
         self, pose: tuple[float, float, float], ranges_m: np.ndarray, returned: np.ndarray
     ) -> np.ndarray:
         """Cells seen free by the beams, as a ``(size, size)`` bool array; ``pose`` in window metres."""
         free_to = np.where(returned, np.maximum(ranges_m - _WALL_SHRINK_M, 0.0), ranges_m).astype(np.float32)
-        kind = np.where(returned, WALL, FREE).astype(np.uint8)
-        self.map.reset()
-        self.map.update(Scan(pose, ranges_m, RayHits(free_to, kind), self.offsets))
-        return self.map.grid == MAPPED_FREE
+        return self._marker.free(pose, free_to)
 
 
 class OwnMap:

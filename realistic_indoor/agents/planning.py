@@ -20,7 +20,7 @@ from numba import njit
 
 from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL
 from realistic_indoor.checks import require_positive
-from realistic_indoor.sim._edt import distance_to_mask
+from realistic_indoor.sim.fields import distance_field
 
 __all__ = ["CostConfig", "clearance", "costmap", "dijkstra", "trace_path"]
 
@@ -53,9 +53,10 @@ class CostConfig:
 def clearance(state: np.ndarray, resolution_m: float) -> np.ndarray:
     """Distance from each cell's centre to the nearest occupied cell's centre (m, float32).
 
-    Cost: the simulator's exact Euclidean distance transform, about 15 ms per million cells.
+    Cost: the simulator's exact Euclidean distance transform
+    (:func:`~realistic_indoor.sim.fields.distance_field`), about 15 ms per million cells.
     """
-    return distance_to_mask(state == OCCUPIED_CELL) * np.float32(resolution_m)
+    return distance_field(state == OCCUPIED_CELL, resolution_m)
 
 
 def costmap(

@@ -10,6 +10,7 @@ import numpy as np
 
 from realistic_indoor.agents.base import RobotSpec
 from realistic_indoor.agents.occupancy import FREE_CELL, OwnMap
+from realistic_indoor.sim.lidar import beam_offsets
 
 __all__ = ["Reflexes"]
 
@@ -49,7 +50,7 @@ class Reflexes:
         self.map = own_map
         self.bump_half_width_m = bump_half_width_m
         self.stuck_move_m = stuck_move_m
-        self._offsets = spec.beam_offsets_rad()
+        self._offsets = beam_offsets(spec.lidar)
         self._recent: deque[tuple[float, float]] = deque(maxlen=stuck_steps)
         self.reset()
 

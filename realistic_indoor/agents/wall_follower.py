@@ -13,6 +13,7 @@ from realistic_indoor.agents.base import Agent, RobotSpec
 from realistic_indoor.agents.openings import Opening, find_openings, lane_length
 from realistic_indoor.checks import require_positive, require_range
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.lidar import beam_offsets
 
 __all__ = ["WallFollower"]
 
@@ -164,7 +165,7 @@ class WallFollower(Agent):
         self.distance_m = distance_m
         self.speed_share = speed_share
         self.gain = gain
-        offsets = spec.beam_offsets_rad()
+        offsets = beam_offsets(spec.lidar)
         self._offsets = offsets
         self._sectors = {s: _Sectors.of(offsets, s) for s in ("right", "left")}
         self._ahead = np.abs(offsets) < math.pi / 2

@@ -22,7 +22,8 @@ import importlib
 from typing import Any
 
 _WHERE = {
-    "lidar": ("Lidar", "LidarConfig", "Scan"),
+    "fields": ("distance_field",),
+    "lidar": ("Lidar", "LidarConfig", "Scan", "beam_offsets"),
     "mapping": (
         "MAPPED_FREE",
         "MAPPED_OCCUPIED",
@@ -30,6 +31,7 @@ _WHERE = {
         "PIXEL_OCCUPIED",
         "PIXEL_UNKNOWN",
         "UNKNOWN",
+        "FreeSpaceMarker",
         "LocalMapConfig",
         "RobotMap",
     ),
@@ -51,6 +53,7 @@ __all__ = [
     "PIXEL_UNKNOWN",
     "UNKNOWN",
     "WALL",
+    "FreeSpaceMarker",
     "Lidar",
     "LidarConfig",
     "LocalMapConfig",
@@ -66,6 +69,8 @@ __all__ = [
     "VictimSensor",
     "World",
     "WorldConfig",
+    "beam_offsets",
+    "distance_field",
     "place_victims",
     "rasterize",
     "relative_polar",

@@ -1,7 +1,8 @@
 """Exact Euclidean distance transform in numba (Meijster et al. 2000; Felzenszwalb & Huttenlocher).
 
 Several times faster than ``scipy.ndimage.distance_transform_edt``, which also builds the
-feature transform: the world's distance field is rebuilt with every new building.
+feature transform: the world's distance field is rebuilt with every new building. Private: use
+:func:`realistic_indoor.sim.fields.distance_field`.
 """
 
 from __future__ import annotations

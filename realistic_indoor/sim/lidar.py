@@ -13,7 +13,7 @@ from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.sim.raster import WALL
 from realistic_indoor.sim.raycast import Raycaster, RayHits
 
-__all__ = ["Lidar", "LidarConfig", "Scan"]
+__all__ = ["Lidar", "LidarConfig", "Scan", "beam_offsets"]
 
 
 @dataclass(frozen=True)
@@ -39,6 +39,25 @@ class LidarConfig:
         require_int("LidarConfig", "n_beams", self.n_beams, 1)
         require_positive("LidarConfig", "max_range_m", self.max_range_m, "m")
         require_positive("LidarConfig", "noise_std_m", self.noise_std_m, "m", allow_zero=True)
+
+
+def beam_offsets(config: LidarConfig) -> np.ndarray:
+    """Directions of a scanner's beams relative to its heading.
+
+    Beams are spread evenly over the field of view, from ``-fov/2`` (right) to ``+fov/2`` (left),
+    both ends included; a full circle leaves out ``+fov/2``, the same direction as ``-fov/2``. A
+    single beam points straight ahead.
+
+    Args:
+        config: The scanner's settings.
+
+    Returns:
+        ``(n_beams,)`` float64 angles (rad), increasing (counter-clockwise); a new array.
+    """
+    if config.n_beams == 1:
+        return np.zeros(1)
+    full_circle = math.isclose(config.fov_rad, 2 * math.pi)
+    return np.linspace(-config.fov_rad / 2, config.fov_rad / 2, config.n_beams, endpoint=not full_circle)
 
 
 class Scan(NamedTuple):
@@ -75,17 +94,12 @@ class Lidar:
     Attributes:
         config: The scanner's settings.
         offsets_rad: ``(n_beams,)`` beam directions relative to the heading (rad, increasing,
-            counter-clockwise).
+            counter-clockwise): :func:`beam_offsets` of the config, read-only.
     """
 
     def __init__(self, config: LidarConfig | None = None) -> None:
         self.config = config or LidarConfig()
-        c = self.config
-        full_circle = math.isclose(c.fov_rad, 2 * math.pi)
-        if c.n_beams == 1:
-            offsets = np.zeros(1)
-        else:
-            offsets = np.linspace(-c.fov_rad / 2, c.fov_rad / 2, c.n_beams, endpoint=not full_circle)
+        offsets = beam_offsets(self.config)
         offsets.setflags(write=False)
         self.offsets_rad = offsets
         self._cos = np.cos(offsets)

@@ -1,4 +1,9 @@
-"""The robot's own occupancy map, built from its scans: coverage and an egocentric local view."""
+"""The robot's own occupancy map, built from its scans: coverage and an egocentric local view.
+
+:class:`RobotMap` maps a world's cells against its ground truth; :class:`FreeSpaceMarker`
+applies the same rule for what a scan sweeps to a bare grid, for a robot that builds its own
+map from its readings alone.
+"""
 
 from __future__ import annotations
 
@@ -35,6 +40,7 @@ __all__ = [
     "PIXEL_OCCUPIED",
     "PIXEL_UNKNOWN",
     "UNKNOWN",
+    "FreeSpaceMarker",
     "LocalMapConfig",
     "RobotMap",
 ]
@@ -210,11 +216,88 @@ class RobotMap:
 
     def _set_beams(self, offsets: np.ndarray) -> None:
         self._offsets = offsets
-        self._cos = np.cos(offsets)
-        self._sin = np.sin(offsets)
-        n = len(offsets)
-        span = (offsets[-1] - offsets[0]) * n / (n - 1) if n > 2 else 0.0
-        self._closed = bool(n > 2 and math.isclose(span, 2 * math.pi, abs_tol=1e-6))
+        self._cos, self._sin, self._closed = _beam_table(offsets)
+
+
+class FreeSpaceMarker:
+    """The floor a scan swept, on a bare grid: :class:`RobotMap`'s rule with no ground truth.
+
+    A scan sweeps the cells whose centre lies in the fan between each two neighbouring beams (up
+    to the shorter of their ranges) and the cells each beam crosses, as :meth:`RobotMap.update`
+    marks them free; here every cell of the grid may be free, and nothing is marked occupied.
+    For an agent that builds its own map from its readings and odometry (it knows no world).
+
+    Args:
+        shape: ``(rows, cols)`` of the grid (cells).
+        resolution_m: Side of a cell (m).
+        offsets_rad: ``(n_beams,)`` beam directions relative to the heading (rad, increasing),
+            e.g. :func:`~realistic_indoor.sim.lidar.beam_offsets` of the scanner's config.
+
+    Attributes:
+        shape: ``(rows, cols)`` of the grid (cells).
+        resolution_m: Side of a cell (m).
+    """
+
+    def __init__(self, shape: tuple[int, int], resolution_m: float, offsets_rad: np.ndarray) -> None:
+        require_int("FreeSpaceMarker", "shape[0]", shape[0], 1)
+        require_int("FreeSpaceMarker", "shape[1]", shape[1], 1)
+        require_positive("FreeSpaceMarker", "resolution_m", resolution_m, "m")
+        offsets = np.asarray(offsets_rad, dtype=float)
+        if offsets.ndim != 1 or len(offsets) == 0:
+            raise ConfigError(f"FreeSpaceMarker needs a 1-D array of beam offsets, got shape {offsets.shape}")
+        self.shape = (int(shape[0]), int(shape[1]))
+        self.resolution_m = resolution_m
+        self._cos, self._sin, self._closed = _beam_table(offsets)
+        self._kind = np.full(len(offsets), FREE, dtype=np.uint8)  # no beam marks a wall
+        self._targets = np.full(self.shape, T_FREE, dtype=np.uint8)
+        self._todo_at_start = free_per_strip(self._targets)
+        self._todo = self._todo_at_start.copy()
+        self._grid = np.zeros(self.shape, dtype=np.uint8)
+        self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here
+        self._pooled = np.zeros((1, 1), dtype=np.uint8)
+
+    def free(self, pose: tuple[float, float, float], ranges_m: np.ndarray) -> np.ndarray:
+        """The cells a scan swept free.
+
+        Args:
+            pose: ``(x m, y m, heading rad)`` of the scanner in the grid's frame: ``(0, 0)`` is
+                the lower-left corner of cell ``(0, 0)``, rows along y, columns along x.
+            ranges_m: ``(n_beams,)`` how far each beam saw free floor (m), as float32; a
+                returned beam's reading less a margin keeps its wall cell out.
+
+        Returns:
+            ``(rows, cols)`` bool array, ``True`` on the swept cells; a new array. Cost: about
+            1 ns per cell of the fan, as :meth:`RobotMap.update`.
+        """
+        self._grid.fill(UNKNOWN)
+        self._todo[...] = self._todo_at_start
+        x, y, theta = pose
+        res = self.resolution_m
+        integrate_scan(
+            self._grid,
+            self._pooled,
+            self._pool,
+            self._targets,
+            self._todo,
+            x / res,
+            y / res,
+            math.cos(theta),
+            math.sin(theta),
+            self._cos,
+            self._sin,
+            np.asarray(ranges_m, dtype=np.float32),
+            self._kind,
+            1.0 / res,
+            self._closed,
+        )
+        return self._grid == MAPPED_FREE
+
+
+def _beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
+    """Cosines and sines of the beam offsets, and whether the beams close a full circle."""
+    n = len(offsets)
+    span = (offsets[-1] - offsets[0]) * n / (n - 1) if n > 2 else 0.0
+    return np.cos(offsets), np.sin(offsets), bool(n > 2 and math.isclose(span, 2 * math.pi, abs_tol=1e-6))
 
 
 def _targets(world: World) -> np.ndarray:

@@ -9,7 +9,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim._edt import distance_to_mask
+from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, OccupancyRaster
 
 __all__ = ["RayHits", "Raycaster", "free_distance_cells"]
@@ -163,10 +163,9 @@ class Raycaster:
 def free_distance_cells(raster: OccupancyRaster) -> np.ndarray:
     """Distance (in cells) from each free cell's centre to the nearest wall or outside cell's.
 
-    Zero on non-free cells; float32 ``(H, W)``. Exact (as ``scipy.ndimage.distance_transform_edt``,
-    several times faster).
+    Zero on non-free cells; float32 ``(H, W)``, a new array (:func:`~realistic_indoor.sim.fields.distance_field`).
     """
-    return distance_to_mask(raster.grid != FREE)
+    return distance_field(raster.grid != FREE)
 
 
 def _skip_field(grid: np.ndarray, dist: np.ndarray) -> np.ndarray:

@@ -7,6 +7,7 @@ from realistic_indoor.agents import AGENTS, RandomAgent, RobotSpec, make_agent
 from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.search import SearchEnv
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.lidar import beam_offsets
 
 MAP_FREE_AGENTS = [name for name in AGENTS if name != "ppo"]
 
@@ -73,7 +74,7 @@ def test_make_agent__passes_options_and_accepts_a_spec():
 def test_robot_spec__reads_the_environment(hall_office):
     env = gym.make("OfficeSearch-v0", building=hall_office, lidar={"n_beams": 61}, action_type="discrete")
     spec = RobotSpec.from_env(env)
-    assert spec.lidar.n_beams == 61 and len(spec.beam_offsets_rad()) == 61
+    assert spec.lidar.n_beams == 61 and len(beam_offsets(spec.lidar)) == 61
     assert spec.victims is not None and spec.action_type == "discrete"
     assert RobotSpec.from_env(gym.make("OfficeExplore-v0", building=hall_office)).victims is None
     assert spec.action(1.0, 0.0) == 0  # forward

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.lidar import Lidar, LidarConfig
+from realistic_indoor.sim.lidar import Lidar, LidarConfig, beam_offsets
 from realistic_indoor.sim.raster import OUTSIDE, WALL, rasterize
 from realistic_indoor.sim.raycast import Raycaster
 
@@ -26,6 +26,15 @@ def test_lidar__full_circle_has_no_duplicate_beam():
     offsets = Lidar(LidarConfig(fov_rad=2 * math.pi, n_beams=8)).offsets_rad
     assert np.diff(offsets) == pytest.approx(np.full(7, math.pi / 4))
     assert offsets[-1] - offsets[0] == pytest.approx(2 * math.pi - math.pi / 4)
+
+
+def test_beam_offsets__are_the_scanners_beams_and_a_new_array():
+    config = LidarConfig(fov_rad=math.radians(180), n_beams=7)
+    lidar = Lidar(config)
+    offsets = beam_offsets(config)
+    assert np.array_equal(offsets, lidar.offsets_rad) and offsets is not lidar.offsets_rad
+    assert offsets.flags.writeable and not lidar.offsets_rad.flags.writeable
+    assert np.array_equal(beam_offsets(LidarConfig(n_beams=1)), [0.0])
 
 
 def test_lidar__readings_turn_with_the_heading(tiny_raycaster):

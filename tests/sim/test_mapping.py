@@ -14,6 +14,7 @@ from realistic_indoor.sim.mapping import (
     PIXEL_OCCUPIED,
     PIXEL_UNKNOWN,
     UNKNOWN,
+    FreeSpaceMarker,
     LocalMapConfig,
     RobotMap,
 )
@@ -186,3 +187,24 @@ def test_robot_map__in_a_large_building(rng):
     lidar = Lidar()
     total = sum(m.update(lidar.scan(world.raycaster, (1.25, y, 0.0), rng)) for y in np.arange(1, 37, 0.5))
     assert total == pytest.approx(m.observed_area_m2) and 0.05 < m.coverage < 0.5
+
+
+@pytest.mark.parametrize("config", [RING, LidarConfig(noise_std_m=0.0)], ids=["ring", "default"])
+def test_free_space_marker__is_the_robot_maps_fan_without_ground_truth(office, config):
+    world = World(office)
+    res, (x0, y0) = world.raster.resolution_m, world.raster.origin
+    marker = FreeSpaceMarker(world.raster.shape, res, Lidar(config).offsets_rad)
+    for pose in [(1.25, 3.0, 1.5), (6.0, 6.25, 0.0), (4.5, 2.5, 2.0)]:
+        scan = _scan_from(world, pose, config)
+        m = RobotMap(world)
+        m.update(scan)
+        swept = marker.free((pose[0] - x0, pose[1] - y0, pose[2]), scan.true.range_m)
+        assert np.array_equal(m.grid == MAPPED_FREE, swept & (world.raster.grid == FREE))
+        assert (swept & (world.raster.grid != FREE)).any()  # no ground truth: beams end in walls
+
+
+def test_free_space_marker__checks_its_grid():
+    with pytest.raises(ConfigError, match="resolution_m"):
+        FreeSpaceMarker((10, 10), 0.0, np.zeros(3))
+    with pytest.raises(ConfigError, match="beam offsets"):
+        FreeSpaceMarker((10, 10), 0.1, np.zeros(0))

@@ -134,11 +134,8 @@ def test_raycaster__rejects_a_non_positive_range(tiny_office):
 def test_free_distance_cells__is_the_exact_euclidean_distance_transform(office, rng):
     from scipy.ndimage import distance_transform_edt
 
-    from realistic_indoor.sim._edt import distance_to_mask
     from realistic_indoor.sim.raycast import free_distance_cells
 
     raster = rasterize(office)
     expected = distance_transform_edt(raster.grid == FREE)
     assert np.abs(free_distance_cells(raster) - expected).max() < 1e-4
-    noise = rng.random((123, 77)) < 0.02
-    assert np.abs(distance_to_mask(noise) - distance_transform_edt(~noise)).max() < 1e-4

@@ -178,7 +178,7 @@ class ExploreEnv(gym.Env):
         self.render_mode = render_mode
         self.metadata = {**self.metadata, "render_fps": self.config.robot.control_hz}
         self._source = self.config.source.generator()
-        self._sim = Simulation(self.config)
+        self._sim = self._make_simulation()
         self._actions = ActionMap(
             self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
         )
@@ -211,9 +211,8 @@ class ExploreEnv(gym.Env):
         if not isinstance(building, Building):
             raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
         self._sim.load(building)
-        self._sim.reset(self.np_random)
+        self._reset_simulation(options)
         self._steps = 0
-        self._start_episode(options)
         info = self._info()
         info["start_pose"] = self._sim.world.start_pose
         if self.render_mode == "human":
@@ -303,14 +302,24 @@ class ExploreEnv(gym.Env):
         return None
 
     # -- hooks a task overrides ------------------------------------------------------------------------
+    def _make_simulation(self) -> Simulation:
+        """The task's simulation (exploration: no victims)."""
+        return Simulation(self.config)
+
     def _make_observations(self) -> dict[str, Any]:
         return explore_observations(self.config)
 
-    def _start_episode(self, options: dict[str, Any]) -> None:
-        """Set up what a task adds to an episode (nothing for exploration)."""
+    def _reset_simulation(self, options: dict[str, Any]) -> None:
+        """Start the simulation's episode, with what the task takes from ``reset``'s options."""
+        self._sim.reset(self.np_random)
 
     def _reward_terms(self, outcome: StepOutcome) -> dict[str, float]:
-        return reward_terms(outcome.new_area_m2, outcome.collided)
+        """The reward terms of a step, from what the simulation's step reported.
+
+        The simulation senses and finds; this only reads its outcome, so overriding it changes
+        rewards, never what the robot finds.
+        """
+        return reward_terms(outcome.new_area_m2, outcome.collided, outcome.victims_found)
 
     def _terminated(self) -> bool:
         return self._sim.map.coverage >= self.config.coverage_target

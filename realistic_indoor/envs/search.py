@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from gymnasium import spaces
 
 from realistic_indoor.envs.explore import ExploreEnv
 from realistic_indoor.envs.observations import explore_observations
-from realistic_indoor.envs.rewards import reward_terms
-from realistic_indoor.envs.simulation import Simulation, StepOutcome
+from realistic_indoor.envs.simulation import Simulation
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.victims import VictimSensor, place_victims, relative_polar
+from realistic_indoor.sim.victims import Victims, relative_polar
+
+if TYPE_CHECKING:
+    from realistic_indoor.envs.config import EnvConfig
 
 __all__ = ["SearchEnv", "VictimObservation"]
 
@@ -23,22 +25,23 @@ class VictimObservation:
     Entries ``3i`` to ``3i + 2`` describe the ``i``-th nearest victim in view: ``(1, range /
     sensor_range_m, bearing / pi)``, bearing 0 straight ahead and positive to the left;
     entries beyond the victims in view are zeros. (Flat, as stable-baselines3's
-    ``MultiInputPolicy`` wants vectors.)
+    ``MultiInputPolicy`` wants vectors.) The victims in view are those the simulation's victim
+    sensor saw at the latest step (or reset).
     """
 
-    def __init__(self, env: SearchEnv) -> None:
-        c = env.config.victims
-        self._env = env
+    def __init__(self, config: EnvConfig) -> None:
+        c = config.victims
         self._scale = np.array([1.0 / c.sensor_range_m, 1.0 / np.pi])
         low = np.tile(np.array([0.0, 0.0, -1.0], np.float32), c.n_victims)
         self.space = spaces.Box(low, np.ones_like(low), (3 * c.n_victims,), np.float32)
 
     def observe(self, sim: Simulation) -> np.ndarray:
         """The victims in view (a new array)."""
-        out = np.zeros((len(self._env._victims_xy), 3), dtype=np.float32)
-        seen = self._env._in_view
+        victims = _victims_of(sim)
+        out = np.zeros((len(victims.xy), 3), dtype=np.float32)
+        seen = victims.in_view
         if seen.any():
-            ranges, bearings = relative_polar(sim.robot.pose, self._env._victims_xy[seen])
+            ranges, bearings = relative_polar(sim.robot.pose, victims.xy[seen])
             order = np.argsort(ranges, kind="stable")
             rows = np.stack([ranges[order], bearings[order]], axis=1) * self._scale
             out[: len(order), 0] = 1.0
@@ -57,6 +60,11 @@ class SearchEnv(ExploreEnv):
     first time the victim sensor sees it: within ``victims.sensor_range_m`` (3 m), within
     ``victims.sensor_fov_rad`` (120 degrees) of the heading, and in line of sight. The goal
     is to find every victim as fast as possible.
+
+    The simulation (:class:`~realistic_indoor.envs.simulation.Simulation`) places the victims
+    and senses them in every step, after the scan; the environment only reads what the step
+    reports (the ``victim`` reward), the found flags (termination, ``info``) and the victims
+    in view (the observation). A subclass with other rewards finds the same victims.
 
     ## Action Space
 
@@ -120,29 +128,22 @@ class SearchEnv(ExploreEnv):
     reset_options = frozenset({"building", "victims"})
     task = "search"
 
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self._sensor = VictimSensor(self.config.victims)
-        n = self.config.victims.n_victims
-        self._victims_xy = np.zeros((n, 2))
-        self._found = np.zeros(n, dtype=bool)
-        self._in_view = np.zeros(n, dtype=bool)
-
     @property
     def victims(self) -> tuple[np.ndarray, np.ndarray]:
         """``(positions (N, 2) m, found (N,) bool)`` of this episode's victims (copies)."""
-        return self._victims_xy.copy(), self._found.copy()
+        victims = _victims_of(self._sim)
+        return victims.xy.copy(), victims.found.copy()
+
+    def _make_simulation(self) -> Simulation:
+        return Simulation(self.config, victims=True)
 
     def _make_observations(self) -> dict[str, Any]:
-        return {**explore_observations(self.config), "victims": VictimObservation(self)}
+        return {**explore_observations(self.config), "victims": VictimObservation(self.config)}
 
-    def _start_episode(self, options: dict[str, Any]) -> None:
-        if options.get("victims") is not None:
-            self._victims_xy = self._given_victims(options["victims"])
-        else:
-            self._victims_xy = place_victims(self._sim.world, self.np_random, self.config.victims)
-        self._look()
-        self._found = self._in_view.copy()
+    def _reset_simulation(self, options: dict[str, Any]) -> None:
+        given = options.get("victims")
+        xy = None if given is None else self._given_victims(given)
+        self._sim.reset(self.np_random, victims_xy=xy)
 
     def _given_victims(self, victims: object) -> np.ndarray:
         xy = np.array(victims, dtype=float)
@@ -154,21 +155,18 @@ class SearchEnv(ExploreEnv):
             )
         return xy
 
-    def _look(self) -> None:
-        sim = self._sim
-        self._in_view = self._sensor.in_view(sim.world.raycaster, sim.robot.pose, self._victims_xy)
-
-    def _reward_terms(self, outcome: StepOutcome) -> dict[str, float]:
-        self._look()
-        new = self._in_view & ~self._found
-        self._found |= new
-        return reward_terms(outcome.new_area_m2, outcome.collided, int(new.sum()))
-
     def _terminated(self) -> bool:
-        return bool(self._found.all())
+        return bool(_victims_of(self._sim).found.all())
 
     def _info(self) -> dict[str, Any]:
         info = super()._info()
-        info["victims_found"] = int(self._found.sum())
-        info["victims_total"] = len(self._found)
+        found = _victims_of(self._sim).found
+        info["victims_found"] = int(found.sum())
+        info["victims_total"] = len(found)
         return info
+
+
+def _victims_of(sim: Simulation) -> Victims:
+    """The victims of a search simulation (one built with ``victims=True``)."""
+    assert sim.victims is not None, "a search simulation has victims"
+    return sim.victims

@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from realistic_indoor.sim.raycast import Raycaster
     from realistic_indoor.sim.world import World
 
-__all__ = ["VictimConfig", "VictimSensor", "place_victims", "relative_polar"]
+__all__ = ["VictimConfig", "VictimSensor", "Victims", "place_victims", "relative_polar"]
 
 _BATCH = 64
 """Candidate points drawn at a time per room when placing a victim."""
@@ -161,3 +161,55 @@ class VictimSensor:
         if near.any():
             seen[near] = raycaster.visible(pose[:2], np.asarray(victims, dtype=float).reshape(-1, 2)[near])
         return seen
+
+
+class Victims:
+    """The victims of one episode: where they are, which the sensor sees, which it has found.
+
+    A victim is found the first time the sensor sees it; :meth:`look` is the only place that
+    marks victims found. Until the first :meth:`reset`, there are ``n_victims`` victims at the
+    origin, none seen or found.
+
+    Args:
+        config: Number of victims and the sensor's range and field of view.
+
+    Attributes:
+        sensor: The victim sensor.
+        xy: ``(N, 2)`` float64 victim positions (m).
+        in_view: ``(N,)`` bool, the victims the sensor saw at the latest look.
+        found: ``(N,)`` bool, the victims seen at least once this episode.
+    """
+
+    def __init__(self, config: VictimConfig | None = None) -> None:
+        self.sensor = VictimSensor(config)
+        n = self.sensor.config.n_victims
+        self.xy = np.zeros((n, 2))
+        self.in_view = np.zeros(n, dtype=bool)
+        self.found = np.zeros(n, dtype=bool)
+
+    def reset(self, xy: np.ndarray, raycaster: Raycaster, pose: tuple[float, float, float]) -> None:
+        """Start an episode with victims at ``xy`` (m); those in view from ``pose`` count as found.
+
+        Args:
+            xy: ``(N, 2)`` victim positions (m), ``N`` being ``config.n_victims``.
+            raycaster: The world's raycaster (line of sight).
+            pose: ``(x, y, theta)`` of the sensor at the start (m, m, rad).
+        """
+        self.xy = np.asarray(xy, dtype=float).reshape(-1, 2)
+        self.found = np.zeros(len(self.xy), dtype=bool)
+        self.look(raycaster, pose)
+
+    def look(self, raycaster: Raycaster, pose: tuple[float, float, float]) -> int:
+        """Sense the victims from ``pose`` and mark those seen for the first time found.
+
+        Args:
+            raycaster: The world's raycaster (line of sight).
+            pose: ``(x, y, theta)`` of the sensor (m, m, rad).
+
+        Returns:
+            The number of victims found by this look (seen now, never before).
+        """
+        self.in_view = self.sensor.in_view(raycaster, pose, self.xy)
+        new = self.in_view & ~self.found
+        self.found |= new
+        return int(new.sum())

@@ -69,3 +69,39 @@ def test_victims_option__rejects_a_wrong_shape(toy_building):
     env = _env(toy_building)
     with pytest.raises(ConfigError, match="n_victims"):
         env.reset(seed=0, options={"victims": [[1.0, 2.0], [3.0, 4.0]]})
+
+
+class TimeOnlySearch(SearchEnv):
+    """A search whose reward ignores victims: before issue 16 this stopped victims being found."""
+
+    def _reward_terms(self, outcome):
+        return {"time": 1.0}
+
+
+@pytest.mark.parametrize(
+    "make",
+    [
+        lambda b: TimeOnlySearch(building=b, victims={"n_victims": 2}),
+        lambda b: SearchEnv(building=b, victims={"n_victims": 2}, rewards={"victim": 0.0, "new_area": 0.0}),
+    ],
+    ids=["reward-hook-overridden", "other-weights"],
+)
+def test_victims__are_found_by_the_step_whatever_the_rewards(toy_building, make):
+    victims = np.array([[4.0, 5.0], [7.0, 5.0]])  # on the corridor's centre line, ahead
+    plain, other = SearchEnv(building=toy_building, victims={"n_victims": 2}), make(toy_building)
+    runs = []
+    for env in (plain, other):
+        _, info = env.reset(seed=0, options={"victims": victims})
+        found, terminated = [info["victims_found"]], False
+        while not terminated and len(found) <= 40:
+            _, _, terminated, _, info = env.step(FORWARD)
+            found.append(info["victims_found"])
+        runs.append(found)
+        assert terminated and env.victims[1].all()
+
+    # in the empty corridor a victim ahead is found at the first pose within sensor range (3 m)
+    xy = np.array(plain.simulation.trajectory)  # the start, then the position after each step
+    distance_m = np.linalg.norm(xy[:, None, :] - victims[None, :, :], axis=2)  # (poses, victims)
+    expected = np.maximum.accumulate(distance_m <= 3.0, axis=0).sum(axis=1).tolist()
+    assert runs[0] == runs[1] == expected
+    assert 0 < expected.index(1) < expected.index(2)

@@ -19,7 +19,7 @@ from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
 from realistic_indoor.generator.connect import break_mazes, connect_circulation, ensure_reachable
 from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door, door_fits, exterior_walls
 from realistic_indoor.generator.functions import draw_function
-from realistic_indoor.generator.geometry import Rect, to_units
+from realistic_indoor.generator.geometry import Rect, area_to_units, to_units
 from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.typed import model_params
 from realistic_indoor.generator.wings.bays import DOOR_NEED
@@ -151,7 +151,7 @@ def _strips(
 
     def miss(n: int) -> float:
         depth = n * strip
-        length = area_m2 * 100 / depth
+        length = area_to_units(area_m2) / depth
         return abs(abs(math.log(length / depth)) - math.log(target))
 
     n_strips = 2 if len(prog.night) >= 4 and miss(2) < miss(1) else 1
@@ -160,7 +160,7 @@ def _strips(
     for room in sorted(prog.night, key=lambda r: -r[2]):
         k, side = min(((k, s) for k in range(n_strips) for s in (0, 1)), key=lambda ks: loads[ks[0]][ks[1]])
         strips[k][side].append(room)
-        loads[k][side] += room[2] * 100 / (front_d if side == 0 else back_d)
+        loads[k][side] += area_to_units(room[2]) / (front_d if side == 0 else back_d)
     for pair in strips:
         _balance(pair)
     return [(front_d if f else 0, back_d if b else 0, f, b) for f, b in strips]
@@ -201,12 +201,12 @@ def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeMod
             for f, b, fr, br in strips
             for rooms in (fr, br)
         )
-        spare = area_m2 * 100 / depth - least
+        spare = area_to_units(area_m2) / depth - least
         if x_day <= spare or not (_drop_night_room(prog) or _shrink_day_zone(prog, spare / x_day)):
             break
     plan = Plan()
     _day_zone(plan, rng, prog, strips[0][0] + corridor, depth, entry_w)
-    night_len = max(round(area_m2 * 100 / depth) - x_day, least, to_units(3.0))
+    night_len = max(round(area_to_units(area_m2) / depth) - x_day, least, to_units(3.0))
     hallways = []
     y = 0
     for f, b, fr, br in strips:
@@ -257,12 +257,12 @@ def _day_columns(prog: Program, depth: int, entry_w: int, entry_depth: int) -> t
     Where the living rooms reach over the entrance, the kitchen is as deep as the entrance and
     column A as wide as the kitchen or the living rooms need, whichever needs more.
     """
-    living = sum(a for *_, a in prog.living) * 100
-    col_b = max(round(prog.hall * 100 / depth), to_units(3.6)) if prog.hall else entry_w
+    living = area_to_units(sum(a for *_, a in prog.living))
+    col_b = max(round(area_to_units(prog.hall) / depth), to_units(3.6)) if prog.hall else entry_w
     if _over_entry(prog, depth, entry_depth):
-        col_a = max(prog.kitchen * 100 / entry_depth, living / (depth - entry_depth) - col_b)
+        col_a = max(area_to_units(prog.kitchen) / entry_depth, living / (depth - entry_depth) - col_b)
     else:
-        col_a = (prog.kitchen * 100 + living) / depth
+        col_a = (area_to_units(prog.kitchen) + living) / depth
     return max(round(col_a), to_units(2.6)), col_b
 
 
@@ -280,8 +280,8 @@ def _day_zone(
     column B, next to the night zone, the hall (entered through a vestibule) or the entrance, with
     the living rooms reaching over the entrance where the house is deep enough.
     """
-    living = sum(a for *_, a in prog.living) * 100
-    kitchen = prog.kitchen * 100
+    living = area_to_units(sum(a for *_, a in prog.living))
+    kitchen = area_to_units(prog.kitchen)
     room = to_units(2.6)
     col_a, col_b = _day_columns(prog, depth, entry_w, entry_depth)
     over_b = _over_entry(prog, depth, entry_depth)
@@ -321,7 +321,7 @@ def _living(plan: Plan, prog: Program, box: Rect) -> None:
 
 def _widths(rooms: list, length: int, depth: int) -> list[int]:
     """Widths of rooms along a strip: small rooms as their area needs, the others share the rest."""
-    natural = [max(a * 100 / max(depth, 1), MIN_WIDTH) for _, _, a in rooms]
+    natural = [max(area_to_units(a) / max(depth, 1), MIN_WIDTH) for _, _, a in rooms]
     small = [lab is S for lab, _, _ in rooms]
     if (
         all(small)
@@ -366,7 +366,7 @@ def _band(plan: Plan, rooms: list, box: Rect, hallway_above: bool) -> None:
         room = plan.rooms[i]
         mates = [ids[m] for m in (k - 1, k + 1) if 0 <= m < len(ids) and plan.rooms[ids[m]].label is not S]
         a, _, b, _ = room.rects[0]
-        depth = max(round(rooms[k][2] * 100 / (b - a)), to_units(1.5))
+        depth = max(round(area_to_units(rooms[k][2]) / (b - a)), to_units(1.5))
         if room.label is S and mates and depth <= y1 - y0 - to_units(1.2):
             front = (a, y1 - depth, b, y1) if hallway_above else (a, y0, b, y0 + depth)
             back = (a, y0, b, y1 - depth) if hallway_above else (a, y0 + depth, b, y1)

@@ -21,7 +21,7 @@ from realistic_indoor.generator.connect import (
 )
 from realistic_indoor.generator.doors import RULES, add_exterior_door, door_fits, exterior_walls
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
-from realistic_indoor.generator.geometry import Rect, to_units
+from realistic_indoor.generator.geometry import Rect, area_to_units, to_units
 from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.wings.bays import DOOR_NEED, BayContext, subdivide
 from realistic_indoor.generator.wings.budget import building_budget
@@ -263,5 +263,5 @@ def layout_dims(rng: np.random.Generator, model: BuildingTypeModel, style: WingS
         corridor=to_units(corridor * rng.uniform(0.9, 1.1)),
         depth=to_units(depth * rng.uniform(0.92, 1.08)),
         shallow=to_units(shallow),
-        hall_area=round(h.area_mean * 100),
+        hall_area=round(area_to_units(h.area_mean)),
     )

@@ -1,7 +1,9 @@
 """Axis-aligned rectangles on the generator's integer grid, and the walls they share.
 
 Generation works in integer grid units of :data:`UNIT_M` metres so that shared walls are found
-by exact comparison; coordinates become metres only when the ``Building`` is built.
+by exact comparison; coordinates become metres only when the ``Building`` is built. Lengths
+convert with :func:`to_units` and :func:`to_metres`, areas (m2 and square units) with
+:func:`area_to_units` and :func:`area_to_m2`.
 """
 
 from __future__ import annotations
@@ -10,10 +12,13 @@ from collections import defaultdict
 from typing import NamedTuple
 
 __all__ = [
+    "UNITS2_PER_M2",
     "UNITS_PER_M",
     "UNIT_M",
     "Contact",
     "Rect",
+    "area_to_m2",
+    "area_to_units",
     "contact",
     "contacts_by_pair",
     "outline",
@@ -27,6 +32,9 @@ UNITS_PER_M = 10
 
 UNIT_M = 1 / UNITS_PER_M
 """Size of one grid unit (m)."""
+
+UNITS2_PER_M2 = UNITS_PER_M**2
+"""Square grid units per square metre (100: one square unit is 0.01 m2)."""
 
 Rect = tuple[int, int, int, int]
 """``(x0, y0, x1, y1)`` in grid units, ``x0 < x1`` and ``y0 < y1``."""
@@ -61,6 +69,38 @@ def to_units(metres: float) -> int:
 def to_metres(units: float) -> float:
     """Grid units in metres (a division, so 3 units print as 0.3)."""
     return units / UNITS_PER_M
+
+
+def area_to_units(m2: float) -> float:
+    """An area in square grid units, not rounded.
+
+    Args:
+        m2: The area (m2).
+
+    Returns:
+        The same area (square units): ``m2 * UNITS2_PER_M2``.
+
+    Examples:
+        >>> area_to_units(12.5)
+        1250.0
+    """
+    return m2 * UNITS2_PER_M2
+
+
+def area_to_m2(units2: float) -> float:
+    """An area in square metres.
+
+    Args:
+        units2: The area (square units).
+
+    Returns:
+        The same area (m2): ``units2 / UNITS2_PER_M2``.
+
+    Examples:
+        >>> area_to_m2(1250)
+        12.5
+    """
+    return units2 / UNITS2_PER_M2
 
 
 def contact(a: Rect, b: Rect) -> Contact | None:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, ClassVar, NamedTuple
 
 from realistic_indoor.building.labels import OUTSIDE, SemanticLabel
 from realistic_indoor.errors import RealisticIndoorError
@@ -19,7 +19,7 @@ from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
 from realistic_indoor.generator.connect import break_mazes, connect_circulation, ensure_reachable
 from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door, door_fits, exterior_walls
 from realistic_indoor.generator.functions import draw_function
-from realistic_indoor.generator.geometry import Rect, to_units
+from realistic_indoor.generator.geometry import Rect, area_to_units, to_units
 from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
 from realistic_indoor.generator.typed import model_params
 from realistic_indoor.generator.wings.bays import DOOR_NEED
@@ -30,16 +30,165 @@ if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.building.building import Building
+    from realistic_indoor.models.building_model import LabelStats
 
 __all__ = ["HouseGenerator"]
 
 MIN_AREA_M2, MAX_AREA_M2 = 50.0, 1000.0
+"""Floor areas a house may be asked for (m2)."""
+
+# The program: which rooms a house holds, and how large.
+
+ALWAYS_HALL_M2 = 400
+"""Floor area above which a house always has a hall (m2); smaller ones have one by chance."""
+HALL_MAX_SHARE = 0.55
+"""Largest share of the floor area the hall takes."""
+FIRST_ROOMS_SHARE = 0.85
+"""Share of the floor area (less the corridors) the first rooms must fit in."""
+FIRST_ROOMS_MIN_SCALE = 0.3
+"""Least factor the first rooms of a small house are shrunk by to fit."""
+MIN_MEDIUM_ROOMS = 2
+"""Medium rooms every house holds (the kitchen and a bedroom)."""
+FILL_SLACK = 0.5
+"""Rooms are added until the program is within this many mean medium-room areas of the floor area."""
+LABEL_JITTER = 0.3
+"""Largest random amount (rooms) added to a label's shortfall when choosing the next room's label."""
+LIVING_FUNCTIONS = ("living room", "dining room")
+"""Functions of the day zone's living rooms."""
+DAY_FUNCTIONS = ("kitchen", *LIVING_FUNCTIONS)
+"""Functions of the day zone's rooms."""
+
+
+class ProgramRoom(NamedTuple):
+    """One room of the program.
+
+    Attributes:
+        label: Semantic label.
+        function: Functional label.
+        area_m2: Area wanted (m2).
+    """
+
+    label: SemanticLabel
+    function: str
+    area_m2: float
+
+
+class AreaRange(NamedTuple):
+    """Bounds of a drawn room area, in multiples of the mean area of the room's label.
+
+    Attributes:
+        low: Lower bound (times the label's mean area).
+        high: Upper bound (times the label's mean area).
+    """
+
+    low: float
+    high: float
+
+    def draw(self, rng: np.random.Generator, stats: LabelStats) -> float:
+        """An area drawn from the label's statistics, clipped to this range (m2)."""
+        return stats.sample_area(rng, self.low * stats.area_mean, self.high * stats.area_mean)
+
+
+class FirstRoom(NamedTuple):
+    """A room the program starts with, and the bounds of its drawn area.
+
+    Attributes:
+        label: Semantic label.
+        function: Functional label.
+        min_m2: Least area drawn (m2).
+        max_x_mean: Largest area drawn (times the label's mean area).
+    """
+
+    label: SemanticLabel
+    function: str
+    min_m2: float
+    max_x_mean: float
+
+    def draw(self, rng: np.random.Generator, model: BuildingTypeModel) -> ProgramRoom:
+        """This room with an area drawn from the model's statistics of its label."""
+        stats = model.stats(self.label)
+        return ProgramRoom(
+            self.label, self.function, stats.sample_area(rng, self.min_m2, self.max_x_mean * stats.area_mean)
+        )
+
+
+HALL_AREA = AreaRange(0.8, 2.0)
+"""Bounds of the hall's area (times the mean hall area)."""
+ROOM_AREA = AreaRange(0.5, 2.0)
+"""Bounds of the area of every room added after the first ones (times its label's mean area)."""
+KITCHEN = FirstRoom(M, "kitchen", 8.0, 2.0)
+"""The kitchen: from 8 m2 to twice the mean medium-room area."""
+LIVING_ROOM = FirstRoom(B, "living room", 12.0, 2.0)
+"""The living room of a house without a hall: from 12 m2 to twice the mean big-room area."""
+BATHROOM = FirstRoom(S, "bathroom", 3.0, 2.0)
+"""The first bathroom: from 3 m2 to twice the mean small-room area."""
+
+# The night zone: strips of a hallway between two bands of rooms.
+
 BAND_M = (2.8, 4.2)
 """Depth of the room bands on either side of a hallway (m)."""
 ASPECT = (1.0, 1.5)
 """Range of the drawn length-to-depth ratio a house's strips are chosen for."""
+TWO_STRIPS_MIN_ROOMS = 4
+"""Fewest night rooms for two strips side by side."""
+HALLWAY_WIDTH_M = (1.1, 1.8)
+"""Narrowest and widest hallway (m); between them, the width of the model's mean corridor."""
 MIN_WIDTH = to_units(1.6)
 """Narrowest room along a hallway, so that its door fits (units)."""
+MIN_ORDINARY_WIDTH = to_units(2.4)
+"""Narrowest room along a hallway other than a small one, when fitting the night zone (units)."""
+MIN_NIGHT_LENGTH = to_units(3.0)
+"""Shortest night zone along its hallways (units)."""
+SMALL_ROOMS_MAX_SHARE = 0.6
+"""Largest share of a band's length its small rooms take at the width their area needs."""
+MIN_TUCKED_DEPTH = to_units(1.5)
+"""Shallowest a small room tucked in next to the hallway is made (units)."""
+MIN_WRAP_DEPTH = to_units(1.2)
+"""Least depth of the part of a room that wraps around behind a tucked-in small room (units)."""
+
+# The day zone: kitchen and living rooms (column A), hall or entrance (column B).
+
+ENTRANCE_WIDTH_M = (2.2, 3.2)
+"""Range of the entrance's drawn width (m)."""
+MIN_DAY_ROOM = to_units(2.6)
+"""Shortest side of the kitchen and the living rooms, and narrowest column A (units)."""
+MIN_HALL_WIDTH = to_units(3.6)
+"""Narrowest hall column (units)."""
+VESTIBULE_WIDTH_M = (2.2, 3.0)
+"""Range of the vestibule's drawn width (m)."""
+VESTIBULE_DEPTH_M = (2.4, 3.4)
+"""Range of the vestibule's drawn depth (m)."""
+MIN_HALL_BESIDE_VESTIBULE = to_units(1.2)
+"""Narrowest the hall is beside the vestibule (units)."""
+DAY_SHRINK_LEAST = 0.5
+"""Least factor the day zone's rooms are shrunk by in one step."""
+DAY_SHRINK_NEGLIGIBLE = 0.98
+"""A shrinking factor above this leaves the day zone as it is."""
+MIN_SHRUNK_KITCHEN_M2 = 7.0
+"""Smallest a shrunk kitchen is made (m2)."""
+MIN_SHRUNK_LIVING_M2 = 10.0
+"""Smallest a shrunk living room is made (m2)."""
+
+# Doors.
+
+P_KITCHEN_TO_CENTRE = 0.5
+"""Chance of a door from the kitchen to the hall or entrance where the living rooms already lead there."""
+
+
+class Strip(NamedTuple):
+    """Night rooms along one hallway: a band in front of it and a band behind it.
+
+    Attributes:
+        front_depth: Depth of the front band (units), 0 where it has no rooms.
+        back_depth: Depth of the back band (units), 0 where it has no rooms.
+        front: Rooms of the front band.
+        back: Rooms of the back band.
+    """
+
+    front_depth: int
+    back_depth: int
+    front: list[ProgramRoom]
+    back: list[ProgramRoom]
 
 
 @dataclass
@@ -49,21 +198,26 @@ class Program:
     Attributes:
         hall: Area of the hall (m2), 0 for a house entered through a short corridor.
         kitchen: Area of the kitchen (m2).
-        living: Labels and areas of the living and dining rooms (m2).
-        night: Label, function and area (m2) of every room on a hallway.
+        living: The living and dining rooms.
+        night: Every room on a hallway.
         hallways: Number of corridor segments along the hallways.
     """
 
     hall: float
     kitchen: float
-    living: list[tuple[SemanticLabel, str, float]] = field(default_factory=list)
-    night: list[tuple[SemanticLabel, str, float]] = field(default_factory=list)
+    living: list[ProgramRoom] = field(default_factory=list)
+    night: list[ProgramRoom] = field(default_factory=list)
     hallways: int = 1
 
 
 def _count(rng: np.random.Generator, expected: float) -> int:
     """A whole number with the given expectation (stochastic rounding)."""
     return int(expected + rng.random())
+
+
+def _total(rooms: list[ProgramRoom]) -> float:
+    """The rooms' summed area (m2)."""
+    return sum(r.area_m2 for r in rooms)
 
 
 def _program(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel) -> Program:
@@ -74,50 +228,73 @@ def _program(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel)
     rooms and corridors fill the area.
     """
     shares = model.shares()
-    stats = {lab: model.stats(lab) for lab in SemanticLabel}
     n = area_m2 / model.mean_room_area()
-    has_hall = area_m2 > 400 or rng.random() < min(1.0, shares[H] * n)
-    hall = stats[H].sample_area(rng, 0.8 * stats[H].area_mean, 2.0 * stats[H].area_mean) if has_hall else 0.0
-    hall = min(hall, 0.55 * area_m2)
-    prog = Program(hall=hall, kitchen=stats[M].sample_area(rng, 8.0, 2.0 * stats[M].area_mean))
-    if not has_hall:
-        prog.living.append((B, "living room", stats[B].sample_area(rng, 12.0, 2.0 * stats[B].area_mean)))
-    prog.night.append((S, "bathroom", stats[S].sample_area(rng, 3.0, 2.0 * stats[S].area_mean)))
-    counts = {S: 1, M: 1, B: 0 if has_hall else 1}
+    prog = _first_rooms(rng, area_m2, model, n)
+    counts = {S: 1, M: 1, B: len(prog.living)}
     n_c = max(1, _count(rng, shares[C] * n))
     prog.hallways = max(1, n_c - 1)
-    corridors = shares[C] * n * stats[C].area_mean
-    _fit_mandatory(prog, 0.85 * area_m2 - corridors)
-    used = prog.hall + prog.kitchen + sum(a for *_, a in prog.living + prog.night) + corridors
-    while used < area_m2 - 0.5 * stats[M].area_mean or counts[M] < 2:
-        label = max((S, M, B), key=lambda lab: shares[lab] * n - counts[lab] + 0.3 * rng.random())
-        label = M if counts[M] < 2 else label
-        a = stats[label].sample_area(rng, 0.5 * stats[label].area_mean, 2.0 * stats[label].area_mean)
-        weights = model.function_weights(label)
-        avoid = ("kitchen", "living room", "dining room") if label is not B or counts[B] else ("kitchen",)
-        function = draw_function(rng, weights, avoid=avoid)
-        if label is M and not any(f == "bedroom" for _, f, _ in prog.night):
-            function = "bedroom"
-        (prog.living if function in ("living room", "dining room") else prog.night).append(
-            (label, function, a)
-        )
-        counts[label] += 1
-        used += a
+    corridors = shares[C] * n * model.stats(C).area_mean
+    _fit_mandatory(prog, FIRST_ROOMS_SHARE * area_m2 - corridors)
+    used = prog.hall + prog.kitchen + _total(prog.living + prog.night) + corridors
+    wanted = {lab: shares[lab] * n for lab in (S, M, B)}
+    while used < area_m2 - FILL_SLACK * model.stats(M).area_mean or counts[M] < MIN_MEDIUM_ROOMS:
+        used += _add_room(rng, prog, model, counts, wanted)
     order = rng.permutation(len(prog.night))
     prog.night = [prog.night[int(k)] for k in order]
     return prog
 
 
+def _first_rooms(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, n: float) -> Program:
+    """The program's first rooms: a hall or a living room, the kitchen and a bathroom.
+
+    Args:
+        rng: Random source.
+        area_m2: The house's floor area (m2).
+        model: The building-type model.
+        n: Rooms the house is expected to hold.
+    """
+    has_hall = area_m2 > ALWAYS_HALL_M2 or rng.random() < min(1.0, model.shares()[H] * n)
+    hall = HALL_AREA.draw(rng, model.stats(H)) if has_hall else 0.0
+    prog = Program(hall=min(hall, HALL_MAX_SHARE * area_m2), kitchen=KITCHEN.draw(rng, model).area_m2)
+    if not has_hall:
+        prog.living.append(LIVING_ROOM.draw(rng, model))
+    prog.night.append(BATHROOM.draw(rng, model))
+    return prog
+
+
+def _add_room(
+    rng: np.random.Generator,
+    prog: Program,
+    model: BuildingTypeModel,
+    counts: dict[SemanticLabel, int],
+    wanted: dict[SemanticLabel, float],
+) -> float:
+    """Add a room with the label furthest behind the rooms ``wanted`` of it; returns its area (m2).
+
+    ``counts`` (rooms of each label so far) is updated.
+    """
+    label = max((S, M, B), key=lambda lab: wanted[lab] - counts[lab] + LABEL_JITTER * rng.random())
+    label = M if counts[M] < MIN_MEDIUM_ROOMS else label
+    a = ROOM_AREA.draw(rng, model.stats(label))
+    avoid = DAY_FUNCTIONS if label is not B or counts[B] else (KITCHEN.function,)
+    function = draw_function(rng, model.function_weights(label), avoid=avoid)
+    if label is M and not any(r.function == "bedroom" for r in prog.night):
+        function = "bedroom"
+    (prog.living if function in LIVING_FUNCTIONS else prog.night).append(ProgramRoom(label, function, a))
+    counts[label] += 1
+    return a
+
+
 def _fit_mandatory(prog: Program, room: float) -> None:
     """Shrink the first rooms of a small house together so that they fit in ``room`` (m2)."""
-    total = prog.hall + prog.kitchen + sum(a for *_, a in prog.living + prog.night)
+    total = prog.hall + prog.kitchen + _total(prog.living + prog.night)
     if total <= room:
         return
-    f = max(room, 0.3 * total) / total
+    f = max(room, FIRST_ROOMS_MIN_SCALE * total) / total
     prog.hall *= f
     prog.kitchen *= f
-    prog.living = [(lab, fn, a * f) for lab, fn, a in prog.living]
-    prog.night = [(lab, fn, a * f) for lab, fn, a in prog.night]
+    prog.living = [r._replace(area_m2=r.area_m2 * f) for r in prog.living]
+    prog.night = [r._replace(area_m2=r.area_m2 * f) for r in prog.night]
 
 
 def _split(total: int, weights: list[float], least: int = 0) -> list[int]:
@@ -137,13 +314,11 @@ def _split(total: int, weights: list[float], least: int = 0) -> list[int]:
     return [edges[k + 1] - edges[k] for k in range(len(weights))]
 
 
-def _strips(
-    rng: np.random.Generator, prog: Program, corridor: int, area_m2: float
-) -> list[tuple[int, int, list, list]]:
-    """Night rooms dealt to strips (front band depth, back band depth, front rooms, back rooms).
+def _strips(rng: np.random.Generator, prog: Program, corridor: int, area_m2: float) -> list[Strip]:
+    """Night rooms dealt to one strip or two side by side.
 
-    One strip or two side by side, whichever makes the house's proportions nearer a drawn aspect
-    ratio (1.0-1.5: houses are compact); two need four night rooms.
+    One strip or two, whichever makes the house's proportions nearer a drawn aspect ratio
+    (:data:`ASPECT`: houses are compact); two need :data:`TWO_STRIPS_MIN_ROOMS` night rooms.
     """
     front_d, back_d = (to_units(rng.uniform(*BAND_M)) for _ in range(2))
     target = rng.uniform(*ASPECT)
@@ -151,22 +326,22 @@ def _strips(
 
     def miss(n: int) -> float:
         depth = n * strip
-        length = area_m2 * 100 / depth
+        length = area_to_units(area_m2) / depth
         return abs(abs(math.log(length / depth)) - math.log(target))
 
-    n_strips = 2 if len(prog.night) >= 4 and miss(2) < miss(1) else 1
+    n_strips = 2 if len(prog.night) >= TWO_STRIPS_MIN_ROOMS and miss(2) < miss(1) else 1
     strips = [[[], []] for _ in range(n_strips)]
     loads = [[0.0, 0.0] for _ in range(n_strips)]
-    for room in sorted(prog.night, key=lambda r: -r[2]):
+    for room in sorted(prog.night, key=lambda r: -r.area_m2):
         k, side = min(((k, s) for k in range(n_strips) for s in (0, 1)), key=lambda ks: loads[ks[0]][ks[1]])
         strips[k][side].append(room)
-        loads[k][side] += room[2] * 100 / (front_d if side == 0 else back_d)
+        loads[k][side] += area_to_units(room.area_m2) / (front_d if side == 0 else back_d)
     for pair in strips:
         _balance(pair)
-    return [(front_d if f else 0, back_d if b else 0, f, b) for f, b in strips]
+    return [Strip(front_d if f else 0, back_d if b else 0, f, b) for f, b in strips]
 
 
-def _balance(pair: list[list]) -> None:
+def _balance(pair: list[list[ProgramRoom]]) -> None:
     """Give a band of only small rooms an ordinary room from the other band, else merge the two.
 
     A band of small rooms alone would stretch them along the whole hallway; a single band makes a
@@ -174,48 +349,56 @@ def _balance(pair: list[list]) -> None:
     """
     if not (pair[0] and pair[1]):
         return
-    small = [all(lab is S for lab, _, _ in side) for side in pair]
+    small = [all(r.label is S for r in side) for side in pair]
     if not any(small):
         return
     poor, rich = (0, 1) if small[0] else (1, 0)
-    ordinary = [r for r in pair[rich] if r[0] is not S]
+    ordinary = [r for r in pair[rich] if r.label is not S]
     if len(pair[rich]) >= 2 and ordinary and not small[rich]:
-        room = min(ordinary, key=lambda r: r[2])
+        room = min(ordinary, key=lambda r: r.area_m2)
         pair[rich].remove(room)
         pair[poor].append(room)
     else:
         pair[0], pair[1] = pair[0] + pair[1], []
 
 
-def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel) -> Plan:
-    prog = _program(rng, area_m2, model)
+def _hallway_width(model: BuildingTypeModel) -> int:
+    """Width of the hallways: the model's mean corridor's, within :data:`HALLWAY_WIDTH_M` (units)."""
     c_stats = model.stats(C)
-    corridor = to_units(min(max(math.sqrt(c_stats.area_mean / max(c_stats.axes_ratio_mean, 1.0)), 1.1), 1.8))
-    entry_w = to_units(rng.uniform(2.2, 3.2))
+    lo, hi = HALLWAY_WIDTH_M
+    return to_units(min(max(math.sqrt(c_stats.area_mean / max(c_stats.axes_ratio_mean, 1.0)), lo), hi))
+
+
+def _least_night_length(strips: list[Strip]) -> int:
+    """Length of the longest band with every room at its narrowest (units)."""
+    return max(
+        sum(MIN_WIDTH if r.label is S else MIN_ORDINARY_WIDTH for r in rooms)
+        for strip in strips
+        for rooms in (strip.front, strip.back)
+    )
+
+
+def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel) -> Plan:
+    """The house's rooms and hallways, without doors.
+
+    The strips are drawn again, with a night room fewer or a smaller day zone, until the day zone
+    fits beside the night zone's least length.
+    """
+    prog = _program(rng, area_m2, model)
+    corridor = _hallway_width(model)
+    entry_w = to_units(rng.uniform(*ENTRANCE_WIDTH_M))
     while True:
         strips = _strips(rng, prog, corridor, area_m2)
         depth = sum(f + corridor + b for f, b, _, _ in strips)
-        x_day = sum(_day_columns(prog, depth, entry_w, strips[0][0] + corridor))
-        least = max(
-            sum(MIN_WIDTH if lab is S else to_units(2.4) for lab, _, _ in rooms)
-            for f, b, fr, br in strips
-            for rooms in (fr, br)
-        )
-        spare = area_m2 * 100 / depth - least
+        x_day = sum(_day_columns(prog, depth, entry_w, strips[0].front_depth + corridor))
+        least = _least_night_length(strips)
+        spare = area_to_units(area_m2) / depth - least
         if x_day <= spare or not (_drop_night_room(prog) or _shrink_day_zone(prog, spare / x_day)):
             break
     plan = Plan()
-    _day_zone(plan, rng, prog, strips[0][0] + corridor, depth, entry_w)
-    night_len = max(round(area_m2 * 100 / depth) - x_day, least, to_units(3.0))
-    hallways = []
-    y = 0
-    for f, b, fr, br in strips:
-        hallways.append((x_day, y + f, x_day + night_len, y + f + corridor))
-        _band(plan, fr, (x_day, y, x_day + night_len, y + f), hallway_above=True)
-        _band(
-            plan, br, (x_day, y + f + corridor, x_day + night_len, y + f + corridor + b), hallway_above=False
-        )
-        y += f + corridor + b
+    _day_zone(plan, rng, prog, strips[0].front_depth + corridor, depth, entry_w)
+    night_len = max(round(area_to_units(area_m2) / depth) - x_day, least, MIN_NIGHT_LENGTH)
+    hallways = _night_zone(plan, strips, corridor, x_day, night_len)
     fronts = corridor_fronts(plan, hallways)
     segments = segment_corridors(hallways, prog.hallways, rng, 2 * corridor, [], fronts, DOOR_NEED)
     for seg in segments:
@@ -223,17 +406,38 @@ def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeMod
     return plan
 
 
+def _night_zone(plan: Plan, strips: list[Strip], corridor: int, x0: int, length: int) -> list[Rect]:
+    """Lay out the strips' bands one above the other from ``x0``; returns the hallways between them.
+
+    Args:
+        plan: The plan the rooms are added to.
+        strips: The strips, bottom first.
+        corridor: Width of the hallways (units).
+        x0: Where the night zone starts (units).
+        length: Length of the night zone (units).
+    """
+    hallways = []
+    y = 0
+    x1 = x0 + length
+    for f, b, fr, br in strips:
+        hallways.append((x0, y + f, x1, y + f + corridor))
+        _band(plan, fr, (x0, y, x1, y + f), hallway_above=True)
+        _band(plan, br, (x0, y + f + corridor, x1, y + f + corridor + b), hallway_above=False)
+        y += f + corridor + b
+    return hallways
+
+
 def _drop_night_room(prog: Program) -> bool:
     """Leave out the smallest night room but the bathroom and the last bedroom (``False``: none left)."""
-    keep_bedroom = sum(f == "bedroom" for _, f, _ in prog.night) <= 1
+    keep_bedroom = sum(r.function == "bedroom" for r in prog.night) <= 1
     pool = [
         k
-        for k, (_, f, _) in enumerate(prog.night)
-        if f != "bathroom" and not (keep_bedroom and f == "bedroom")
+        for k, r in enumerate(prog.night)
+        if r.function != "bathroom" and not (keep_bedroom and r.function == "bedroom")
     ]
     if not pool:
         return False
-    del prog.night[min(pool, key=lambda k: prog.night[k][2])]
+    del prog.night[min(pool, key=lambda k: prog.night[k].area_m2)]
     return True
 
 
@@ -242,12 +446,12 @@ def _shrink_day_zone(prog: Program, factor: float) -> bool:
     if len(prog.living) > 1:
         del prog.living[1:]
         return True
-    factor = max(factor, 0.5)
-    if factor >= 0.98:
+    factor = max(factor, DAY_SHRINK_LEAST)
+    if factor >= DAY_SHRINK_NEGLIGIBLE:
         return False
-    prog.kitchen = max(prog.kitchen * factor, 7.0)
+    prog.kitchen = max(prog.kitchen * factor, MIN_SHRUNK_KITCHEN_M2)
     prog.hall *= factor
-    prog.living = [(lab, f, max(a * factor, 10.0)) for lab, f, a in prog.living]
+    prog.living = [r._replace(area_m2=max(r.area_m2 * factor, MIN_SHRUNK_LIVING_M2)) for r in prog.living]
     return True
 
 
@@ -257,18 +461,18 @@ def _day_columns(prog: Program, depth: int, entry_w: int, entry_depth: int) -> t
     Where the living rooms reach over the entrance, the kitchen is as deep as the entrance and
     column A as wide as the kitchen or the living rooms need, whichever needs more.
     """
-    living = sum(a for *_, a in prog.living) * 100
-    col_b = max(round(prog.hall * 100 / depth), to_units(3.6)) if prog.hall else entry_w
+    living = area_to_units(_total(prog.living))
+    col_b = max(round(area_to_units(prog.hall) / depth), MIN_HALL_WIDTH) if prog.hall else entry_w
     if _over_entry(prog, depth, entry_depth):
-        col_a = max(prog.kitchen * 100 / entry_depth, living / (depth - entry_depth) - col_b)
+        col_a = max(area_to_units(prog.kitchen) / entry_depth, living / (depth - entry_depth) - col_b)
     else:
-        col_a = (prog.kitchen * 100 + living) / depth
-    return max(round(col_a), to_units(2.6)), col_b
+        col_a = (area_to_units(prog.kitchen) + living) / depth
+    return max(round(col_a), MIN_DAY_ROOM), col_b
 
 
 def _over_entry(prog: Program, depth: int, entry_depth: int) -> bool:
     """Whether the living rooms reach over the entrance (no hall, deep enough for a room above it)."""
-    return not prog.hall and bool(prog.living) and depth - entry_depth >= to_units(2.6)
+    return not prog.hall and bool(prog.living) and depth - entry_depth >= MIN_DAY_ROOM
 
 
 def _day_zone(
@@ -280,9 +484,9 @@ def _day_zone(
     column B, next to the night zone, the hall (entered through a vestibule) or the entrance, with
     the living rooms reaching over the entrance where the house is deep enough.
     """
-    living = sum(a for *_, a in prog.living) * 100
-    kitchen = prog.kitchen * 100
-    room = to_units(2.6)
+    living = area_to_units(_total(prog.living))
+    kitchen = area_to_units(prog.kitchen)
+    room = MIN_DAY_ROOM
     col_a, col_b = _day_columns(prog, depth, entry_w, entry_depth)
     over_b = _over_entry(prog, depth, entry_depth)
     if prog.hall:
@@ -310,28 +514,36 @@ def _day_zone(
 
 
 def _living(plan: Plan, prog: Program, box: Rect) -> None:
+    """The living rooms side by side in ``box`` (units), widths in proportion to their areas."""
     x0, y0, x1, y1 = box
     x = x0
-    for (label, function, _), w in zip(
-        prog.living, _split(x1 - x0, [a for *_, a in prog.living]), strict=True
-    ):
-        plan.add(PlanRoom([(x, y0, x + w, y1)], label, function=function, role="living"))
+    for r, w in zip(prog.living, _split(x1 - x0, [r.area_m2 for r in prog.living]), strict=True):
+        plan.add(PlanRoom([(x, y0, x + w, y1)], r.label, function=r.function, role="living"))
         x += w
 
 
-def _widths(rooms: list, length: int, depth: int) -> list[int]:
-    """Widths of rooms along a strip: small rooms as their area needs, the others share the rest."""
-    natural = [max(a * 100 / max(depth, 1), MIN_WIDTH) for _, _, a in rooms]
-    small = [lab is S for lab, _, _ in rooms]
+def _widths(rooms: list[ProgramRoom], length: int, depth: int) -> list[int]:
+    """Widths of rooms along a strip: small rooms as their area needs, the others share the rest.
+
+    Args:
+        rooms: The band's rooms.
+        length: Length of the band (units).
+        depth: Depth of the band (units).
+
+    Returns:
+        Each room's width (units), together ``length``.
+    """
+    natural = [max(area_to_units(r.area_m2) / max(depth, 1), MIN_WIDTH) for r in rooms]
+    small = [r.label is S for r in rooms]
     if (
         all(small)
         or not any(small)
-        or sum(n for n, s in zip(natural, small, strict=True) if s) > 0.6 * length
+        or sum(n for n, s in zip(natural, small, strict=True) if s) > SMALL_ROOMS_MAX_SHARE * length
     ):
-        return _split(length, [a for *_, a in rooms], MIN_WIDTH)
+        return _split(length, [r.area_m2 for r in rooms], MIN_WIDTH)
     fixed = [round(n) if s else 0 for n, s in zip(natural, small, strict=True)]
     rest = _split(
-        length - sum(fixed), [a for (_, _, a), s in zip(rooms, small, strict=True) if not s], MIN_WIDTH
+        length - sum(fixed), [r.area_m2 for r, s in zip(rooms, small, strict=True) if not s], MIN_WIDTH
     )
     it = iter(rest)
     return [f if s else next(it) for f, s in zip(fixed, small, strict=True)]
@@ -340,16 +552,16 @@ def _widths(rooms: list, length: int, depth: int) -> list[int]:
 def _hall_with_vestibule(plan: Plan, rng: np.random.Generator, box: Rect) -> None:
     """A hall entered through a vestibule (a short corridor) set into its front side."""
     x0, y0, x1, y1 = box
-    w = min(to_units(rng.uniform(2.2, 3.0)), x1 - x0 - to_units(1.2))
-    d = to_units(rng.uniform(2.4, 3.4))
+    w = min(to_units(rng.uniform(*VESTIBULE_WIDTH_M)), x1 - x0 - MIN_HALL_BESIDE_VESTIBULE)
+    d = to_units(rng.uniform(*VESTIBULE_DEPTH_M))
     a = x0 + int(rng.integers(0, x1 - x0 - w + 1))
     plan.add(PlanRoom([(a, y0, a + w, y0 + d)], C, function="entrance", role="lobby"))
     rects = [(x0, y0 + d, x1, y1), (x0, y0, a, y0 + d), (a + w, y0, x1, y0 + d)]
     plan.add(PlanRoom([r for r in rects if r[0] < r[2]], H, function="hall", role="hall"))
 
 
-def _band(plan: Plan, rooms: list, box: Rect, hallway_above: bool) -> None:
-    """Rooms side by side along a hallway, widths in proportion to their areas.
+def _band(plan: Plan, rooms: list[ProgramRoom], box: Rect, hallway_above: bool) -> None:
+    """Rooms side by side along a hallway in ``box`` (units), widths in proportion to their areas.
 
     A small room that would come out much deeper than it is wide takes only the part of the
     strip next to the hallway; the room beside it wraps around behind it.
@@ -359,15 +571,33 @@ def _band(plan: Plan, rooms: list, box: Rect, hallway_above: bool) -> None:
     x0, y0, x1, y1 = box
     x = x0
     ids = []
-    for (label, function, _), w in zip(rooms, _widths(rooms, x1 - x0, y1 - y0), strict=True):
-        ids.append(plan.add(PlanRoom([(x, y0, x + w, y1)], label, function=function, role="room")))
+    for r, w in zip(rooms, _widths(rooms, x1 - x0, y1 - y0), strict=True):
+        ids.append(plan.add(PlanRoom([(x, y0, x + w, y1)], r.label, function=r.function, role="room")))
         x += w
+    _tuck_small_rooms(plan, ids, rooms, (y0, y1), hallway_above)
+
+
+def _tuck_small_rooms(
+    plan: Plan, ids: list[int], rooms: list[ProgramRoom], band: tuple[int, int], hallway_above: bool
+) -> None:
+    """Cut each small room of a band to its area's depth next to the hallway, where it can.
+
+    The part behind it goes to an ordinary room beside it, which wraps around the small room.
+
+    Args:
+        plan: The plan holding the band's rooms.
+        ids: The band's rooms in the plan, in order along the band.
+        rooms: Their program.
+        band: The band's extent across the hallway, ``(y0, y1)`` (units).
+        hallway_above: Whether the hallway lies along ``y1`` (else along ``y0``).
+    """
+    y0, y1 = band
     for k, i in enumerate(ids):
         room = plan.rooms[i]
         mates = [ids[m] for m in (k - 1, k + 1) if 0 <= m < len(ids) and plan.rooms[ids[m]].label is not S]
         a, _, b, _ = room.rects[0]
-        depth = max(round(rooms[k][2] * 100 / (b - a)), to_units(1.5))
-        if room.label is S and mates and depth <= y1 - y0 - to_units(1.2):
+        depth = max(round(area_to_units(rooms[k].area_m2) / (b - a)), MIN_TUCKED_DEPTH)
+        if room.label is S and mates and depth <= y1 - y0 - MIN_WRAP_DEPTH:
             front = (a, y1 - depth, b, y1) if hallway_above else (a, y0, b, y0 + depth)
             back = (a, y0, b, y1 - depth) if hallway_above else (a, y0 + depth, b, y1)
             room.rects = [front]
@@ -384,19 +614,33 @@ def _doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel) -> No
         )
     connect_circulation(plan)
     neighbours = plan.neighbours()
+    centre = next((i for i, r in enumerate(plan.rooms) if r.role == "hall"), lobby)
+    _day_doors(plan, rng, model, centre)
+    _night_doors(plan, rng, model, neighbours, centre)
+    ensure_reachable(plan, rng)
+    break_mazes(plan, rng)
+
+
+def _day_doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel, centre: int) -> None:
+    """Doors of the day zone: living rooms to the hall or entrance (``centre``) and the kitchen, garden doors."""
     kitchen = next(i for i, r in enumerate(plan.rooms) if r.role == "kitchen")
     living = [i for i, r in enumerate(plan.rooms) if r.role == "living"]
-    centre = next((i for i, r in enumerate(plan.rooms) if r.role == "hall"), lobby)
     gateways = sum(_door(plan, rng, i, centre) for i in living)
     for i in living:
         _door(plan, rng, kitchen, i)
-    if not gateways or len(living) > gateways or rng.random() < 0.5:
+    if not gateways or len(living) > gateways or rng.random() < P_KITCHEN_TO_CENTRE:
         _door(plan, rng, kitchen, centre)
     p_garden = min(1.0, model.connection(B, OUTSIDE) * model.stats(B).doors_mean)
     for i in living:
         walls = [w for w in exterior_walls(plan, i) if door_fits(w, RULES.room)]
         if walls and rng.random() < p_garden:
             add_door(plan, i, None, walls[0], RULES.room, rng)
+
+
+def _night_doors(
+    plan: Plan, rng: np.random.Generator, model: BuildingTypeModel, neighbours: list[list[int]], centre: int
+) -> None:
+    """A door from every night room to its hallway (else to ``centre``), or a bathroom's to a bedroom."""
     p_ensuite = model.connection(S, M.value) + model.connection(S, B.value)
     for i, r in enumerate(plan.rooms):
         if r.role != "room":
@@ -407,11 +651,10 @@ def _doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel) -> No
             _door(plan, rng, i, bedrooms[0])
         elif not any(_door(plan, rng, i, j) for j in hallway):
             _door(plan, rng, i, centre)
-    ensure_reachable(plan, rng)
-    break_mazes(plan, rng)
 
 
 def _door(plan: Plan, rng: np.random.Generator, i: int, j: int) -> bool:
+    """A room door between rooms ``i`` and ``j``, on the longest shared wall it fits (``False``: none fits)."""
     walls = sorted((w for w in plan.shared(i, j) if door_fits(w, RULES.room)), key=lambda w: -w.length)
     return any(add_door(plan, i, j, w, RULES.room, rng, where="end") for w in walls)
 

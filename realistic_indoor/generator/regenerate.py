@@ -19,7 +19,15 @@ from realistic_indoor.generator.connect import (
 )
 from realistic_indoor.generator.doors import RULES, add_exterior_door
 from realistic_indoor.generator.functions import FunctionRoles, assign_functions
-from realistic_indoor.generator.geometry import UNITS_PER_M, Rect, contact, outline, to_metres
+from realistic_indoor.generator.geometry import (
+    UNITS_PER_M,
+    Rect,
+    area_to_units,
+    contact,
+    outline,
+    to_metres,
+    to_units,
+)
 from realistic_indoor.generator.plan import C, Plan, PlanDoor, PlanRoom, build_door
 from realistic_indoor.generator.wings.bays import BayContext, Budget, subdivide
 from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
@@ -143,8 +151,8 @@ def _plan_of(building: Building) -> Plan:
                 None if d.room_b is None else index[d.room_b],
                 "v" if vertical else "h",
                 _units(fixed, f"door {d.id!r}"),
-                round(2 * along * UNITS_PER_M),
-                round(d.width_m * UNITS_PER_M),
+                to_units(2 * along),
+                to_units(d.width_m),
             )
         )
     return plan
@@ -183,7 +191,9 @@ def _budget(model: BuildingTypeModel, bays: list[Bay]) -> Budget:
     total = sum(shares[lab] for lab in ROOM_LABELS) or 1.0
     frontage = sum(b.length for b in bays)
     depth = sum(b.depth * b.length for b in bays) / max(frontage, 1)
-    width = sum(shares[lab] / total * model.stats(lab).area_mean * 100 / max(depth, 1) for lab in ROOM_LABELS)
+    width = sum(
+        area_to_units(shares[lab] / total * model.stats(lab).area_mean) / max(depth, 1) for lab in ROOM_LABELS
+    )
     n = frontage / max(width, 1)
     p = {lab: shares[lab] / total * n for lab in ROOM_LABELS}
     small = p[SemanticLabel.SMALL]
@@ -298,7 +308,7 @@ def _resample(plan: Plan, chosen: set[int], model: BuildingTypeModel, rng: np.ra
     circulation = {i for i, r in enumerate(plan.rooms) if r.is_circulation and r.rects}
     bays = _region_bays(plan, cells, circulation)
     m, s = model.stats(SemanticLabel.MEDIUM), model.stats(SemanticLabel.SMALL)
-    limit = round((math.sqrt(m.area_mean) + math.sqrt(s.area_mean)) / 2 * UNITS_PER_M)
+    limit = to_units((math.sqrt(m.area_mean) + math.sqrt(s.area_mean)) / 2)
     ctx = BayContext(
         model, _budget(model, bays), [r for j in circulation for r in plan.rooms[j].rects], 14, (2, 3), limit
     )

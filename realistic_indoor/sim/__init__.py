@@ -38,7 +38,7 @@ _WHERE = {
     "raster": ("FREE", "OUTSIDE", "WALL", "OccupancyRaster", "rasterize"),
     "raycast": ("RayHits", "Raycaster"),
     "robot": ("Motion", "Robot", "RobotConfig"),
-    "victims": ("VictimConfig", "VictimSensor", "place_victims", "relative_polar"),
+    "victims": ("VictimConfig", "VictimSensor", "Victims", "place_victims", "relative_polar"),
     "world": ("World", "WorldConfig"),
 }
 _MODULE_OF = {name: module for module, names in _WHERE.items() for name in names}
@@ -67,6 +67,7 @@ __all__ = [
     "Scan",
     "VictimConfig",
     "VictimSensor",
+    "Victims",
     "World",
     "WorldConfig",
     "beam_offsets",

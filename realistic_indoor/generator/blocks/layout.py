@@ -10,6 +10,7 @@ from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
+from realistic_indoor.generator.geometry import area_to_units
 from realistic_indoor.generator.plan import B, H, Plan
 from realistic_indoor.generator.wings.annex import add_annex
 
@@ -85,9 +86,9 @@ def _lay_out(
     """
     dims = layout_dims(rng, model, style)
     dims = replace(dims, corridor=round(dims.corridor * blocks.corridor_scale))
-    area = round((area_m2 - annex_m2) * 100)
+    area = round(area_to_units(area_m2 - annex_m2))
     n_halls = int(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area() + rng.random())
-    hall_area = model.stats(H).area_mean * 100
+    hall_area = area_to_units(model.stats(H).area_mean)
     names = sorted(blocks.compositions)
     weights = [blocks.compositions[n] for n in names]
     shape = names[int(rng.choice(len(names), p=[w / sum(weights) for w in weights]))]

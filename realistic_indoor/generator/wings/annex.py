@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.generator.doors import RULES, exterior_walls
-from realistic_indoor.generator.geometry import Contact, Rect, to_units
+from realistic_indoor.generator.geometry import UNITS_PER_M, Contact, Rect, area_to_units, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
 
 if TYPE_CHECKING:
@@ -81,8 +81,8 @@ def add_annex(
     ]
     order = [spots[int(k)] for k in rng.permutation(len(spots))]
     for scale in (1.0, 0.8, 0.65):
-        long_side = math.sqrt(area_m2 * scale * ratio) * 10
-        short_side = area_m2 * scale * 100 / long_side
+        long_side = math.sqrt(area_m2 * scale * ratio) * UNITS_PER_M
+        short_side = area_to_units(area_m2 * scale) / long_side
         for i, w in order:
             box = _fit(plan, w, _outward(plan, i, w), long_side, short_side)
             if box is not None and not any(_against(box, c) for c in keep_clear):

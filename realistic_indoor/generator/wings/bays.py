@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
-from realistic_indoor.generator.geometry import Rect, contact, to_units
+from realistic_indoor.generator.geometry import Rect, area_to_m2, area_to_units, contact, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
 
 if TYPE_CHECKING:
@@ -140,7 +140,7 @@ def _overlap(t0: int, t1: int, spans: list[tuple[int, int]]) -> int:
 
 def _room_width(rng: np.random.Generator, ctx: BayContext, label: SemanticLabel, depth: int) -> int:
     stats = ctx.model.stats(label)
-    area = stats.sample_area(rng, 0.45 * stats.area_mean, 2.6 * stats.area_mean) * 100
+    area = area_to_units(stats.sample_area(rng, 0.45 * stats.area_mean, 2.6 * stats.area_mean))
     low = MIN_SMALL if label is S else max(MIN_ROOM, round(depth / ctx.max_axes_ratio))
     high = (
         max(3 * depth, to_units(10.0))
@@ -157,7 +157,7 @@ def core_shape(model: BuildingTypeModel, depth: int, rows_range: tuple[int, int]
     shallow bay it is a row of small rooms along the corridor (``rows`` is then the count).
     """
     stats = model.stats(S)
-    area = stats.area_mean * 100
+    area = area_to_units(stats.area_mean)
     if depth >= STUB_DEPTH:
         rows = int(min(max(round(depth / max(math.sqrt(area), 1)), rows_range[0] - 1, 1), rows_range[1]))
         width = int(min(max(area / (depth / rows), MIN_SMALL), to_units(3.2)))
@@ -217,7 +217,7 @@ def _filler(ctx: BayContext, t0: int, t1: int, depth: int, shallow: bool) -> Uni
 
 def label_for_area(model: BuildingTypeModel, area_units: float) -> SemanticLabel:
     """The ordinary label whose mean area is nearest ``area_units`` (square units) on a log scale."""
-    a = max(area_units / 100, 1e-6)
+    a = max(area_to_m2(area_units), 1e-6)
     return min((S, M, B), key=lambda lab: abs(math.log(a / model.stats(lab).area_mean)))
 
 
@@ -237,7 +237,7 @@ def _make_unit(kind: str, t: int, rng: np.random.Generator, ctx: BayContext, dep
     if kind in ("closet", "notch"):
         label = M if rng.random() < 0.75 else B
         stats = ctx.model.stats(S)
-        area = stats.sample_area(rng, 0.6 * stats.area_mean, 1.6 * stats.area_mean) * 100
+        area = area_to_units(stats.sample_area(rng, 0.6 * stats.area_mean, 1.6 * stats.area_mean))
         w = int(min(max(math.sqrt(area), MIN_SMALL), to_units(2.6)))
         d = int(min(max(area / w, MIN_SMALL), depth - MIN_ROOM))
         room = _room_width(rng, ctx, label, depth)

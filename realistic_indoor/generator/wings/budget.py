@@ -6,6 +6,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from realistic_indoor.generator.geometry import area_to_units
 from realistic_indoor.generator.plan import B, M, S
 from realistic_indoor.generator.wings.bays import MIN_SMALL, Budget, core_shape
 
@@ -51,13 +52,13 @@ def _units_for(n: float, f: _Frontage, model: BuildingTypeModel) -> dict[str, fl
     total = max(p[S] + p[M] + p[B], 1e-6)
     ps, pm, pb = p[S] / total, p[M] / total, p[B] / total
     st = model.structures
-    w_small = max(model.stats(S).area_mean * 100 / f.shallow_depth, MIN_SMALL)
+    w_small = max(area_to_units(model.stats(S).area_mean) / f.shallow_depth, MIN_SMALL)
     need_s = ps * n
     closets = st.closets_per_room * (pm + pb) * n
     rest = need_s * (1 - st.clustered_small_rooms) - closets - f.ends
     small = min(max(rest, 0.0), f.shallow_length / w_small)
     shallow_m = max(f.shallow_length - small * w_small, 0.0) / (
-        model.stats(M).area_mean * 100 / f.shallow_depth
+        area_to_units(model.stats(M).area_mean) / f.shallow_depth
     )
     notches = max(rest - small, 0.0)
     closets = max(closets + min(rest, 0.0), 0.0)
@@ -76,9 +77,9 @@ def _units_for(n: float, f: _Frontage, model: BuildingTypeModel) -> dict[str, fl
 def _deep_frontage(units: dict[str, float], f: _Frontage, model: BuildingTypeModel) -> float:
     """Length of deep strip the units take (closets and notches go with medium and big rooms)."""
     paired = units["closet"] + units["notch"]
-    medium = (max(units["M"], 0) + 0.75 * paired) * model.stats(M).area_mean * 100 / f.deep_depth
-    big = (max(units["B"], 0) + 0.25 * paired) * model.stats(B).area_mean * 100 / f.deep_depth
-    notch = units["notch"] * max(math.sqrt(model.stats(S).area_mean * 100), MIN_SMALL)
+    medium = area_to_units((max(units["M"], 0) + 0.75 * paired) * model.stats(M).area_mean) / f.deep_depth
+    big = area_to_units((max(units["B"], 0) + 0.25 * paired) * model.stats(B).area_mean) / f.deep_depth
+    notch = units["notch"] * max(math.sqrt(area_to_units(model.stats(S).area_mean)), MIN_SMALL)
     return medium + big + units["core"] * f.core_width + notch
 
 

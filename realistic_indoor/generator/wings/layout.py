@@ -6,7 +6,7 @@ import math
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, rooms_from_regions
-from realistic_indoor.generator.geometry import to_units
+from realistic_indoor.generator.geometry import area_to_units, to_metres, to_units
 from realistic_indoor.generator.plan import H, Plan
 from realistic_indoor.generator.wings.annex import add_annex
 from realistic_indoor.generator.wings.paint import paint
@@ -32,7 +32,7 @@ def _skeleton(
     style's ``max_extent_m``).
     """
     n_rooms = area_m2 / model.mean_room_area()
-    across = (1.3 * dims.depth + dims.corridor) / 10
+    across = to_metres(1.3 * dims.depth + dims.corridor)
     lo, hi = style.wing_length_m
     max_extent = to_units(max(style.max_extent_m, 2.6 * math.sqrt(area_m2)))
     best, best_cost = None, math.inf
@@ -40,7 +40,9 @@ def _skeleton(
         n_edges = max(1, round(area_m2 / across / rng.uniform(lo, hi)))
         sk = sample_shape(rng, n_edges, style.shapes)
         n_halls = int(model.shares()[H] * n_rooms + rng.random())
-        gap = size_skeleton(sk, rng, dims, style, area_m2 * 100, (n_halls, model.structures.junction_halls))
+        gap = size_skeleton(
+            sk, rng, dims, style, area_to_units(area_m2), (n_halls, model.structures.junction_halls)
+        )
         extent = max(sum(map(sum, sk.cols)) + sum(sk.col_gaps), sum(map(sum, sk.rows)) + sum(sk.row_gaps))
         cost = max(0.0, 0.4 * lo - gap) + max(0.0, gap - 1.8 * hi) + max(0, extent - max_extent) / 2
         cost += 1000.0 if gap <= MIN_GAP_M else 0.0

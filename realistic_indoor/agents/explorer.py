@@ -20,13 +20,14 @@ import numpy as np
 from realistic_indoor.agents.base import Agent, RobotSpec
 from realistic_indoor.agents.follower import FollowerConfig, PathFollower
 from realistic_indoor.agents.frontiers import Frontiers, find_frontiers, unobserved
-from realistic_indoor.agents.occupancy import FREE_CELL, Box, OwnMap
+from realistic_indoor.agents.occupancy import Box, OwnMap
 from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
 from realistic_indoor.agents.reflexes import Reflexes
 from realistic_indoor.agents.victims import VictimTracker
 from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.lidar import beam_offsets
+from realistic_indoor.sim.mapping import MAPPED_FREE
 
 __all__ = ["ExplorerConfig", "MapExplorer", "PlanContext"]
 
@@ -238,7 +239,7 @@ class MapExplorer(Agent):
         res = self.map.resolution_m
         cols = np.floor((ahead[:, 0] - self.map.origin[0]) / res).astype(np.intp)
         rows = np.floor((ahead[:, 1] - self.map.origin[1]) / res).astype(np.intp)
-        return bool(np.any(self.map.state[rows, cols] != FREE_CELL))
+        return bool(np.any(self.map.state[rows, cols] != MAPPED_FREE))
 
     # -- planning ----------------------------------------------------------------------------------------
     def _plan(self, pose: tuple[float, float, float]) -> None:

@@ -13,7 +13,7 @@ from typing import NamedTuple
 import numpy as np
 from scipy import ndimage
 
-from realistic_indoor.agents.occupancy import FREE_CELL, UNKNOWN_CELL
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_UNKNOWN
 
 __all__ = ["Frontiers", "find_frontiers", "unobserved"]
 
@@ -45,9 +45,9 @@ class Frontiers(NamedTuple):
 
 def unobserved(state: np.ndarray, searched: np.ndarray | None = None) -> np.ndarray:
     """Cells still to observe: unknown, or (with ``searched``) free but not yet swept."""
-    todo = state == UNKNOWN_CELL
+    todo = state == MAPPED_UNKNOWN
     if searched is not None:
-        todo |= (state == FREE_CELL) & ~searched
+        todo |= (state == MAPPED_FREE) & ~searched
     return todo
 
 
@@ -68,7 +68,7 @@ def find_frontiers(state: np.ndarray, searched: np.ndarray | None = None, min_ce
     near[:-1] |= todo[1:]
     near[:, 1:] |= todo[:, :-1]
     near[:, :-1] |= todo[:, 1:]
-    cells = (state == FREE_CELL) & ~todo & near
+    cells = (state == MAPPED_FREE) & ~todo & near
     labels, count = ndimage.label(cells, structure=_EIGHT)
     return _compact(labels, count, min_cells)
 

@@ -17,12 +17,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, UNKNOWN, FreeSpaceMarker
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, MAPPED_UNKNOWN, FreeSpaceMarker
 
-__all__ = ["FREE_CELL", "OCCUPIED_CELL", "UNKNOWN_CELL", "Box", "OwnMap"]
-
-UNKNOWN_CELL, FREE_CELL, OCCUPIED_CELL = UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED
-"""States of a cell of :attr:`OwnMap.state` (the simulator's map states)."""
+__all__ = ["Box", "OwnMap"]
 
 _RETURN_TOLERANCE = 1e-4
 """A reading within this share of the maximum range counts as "no return"."""
@@ -73,8 +70,8 @@ class OwnMap:
         grow_m: Margin added on a side when the robot's view passes the grid's edge (m).
 
     Attributes:
-        state: ``(H, W)`` uint8 cells :data:`UNKNOWN_CELL`, :data:`FREE_CELL`,
-            :data:`OCCUPIED_CELL`; row 0 is the lowest y.
+        state: ``(H, W)`` uint8 cells :data:`MAPPED_UNKNOWN`, :data:`MAPPED_FREE`,
+            :data:`MAPPED_OCCUPIED`; row 0 is the lowest y.
         searched: ``(H, W)`` bool, or ``None`` without a search sensor.
         origin: Odometry coordinates ``(x0, y0)`` (m) of the lower-left corner of cell ``(0, 0)``.
         resolution_m: Side of a cell (m).
@@ -106,7 +103,7 @@ class OwnMap:
     def reset(self) -> None:
         """Forget everything: an empty grid around the origin."""
         n = self._laser.size + 2 * self._grow
-        self.state = np.full((n, n), UNKNOWN_CELL, dtype=np.uint8)
+        self.state = np.full((n, n), MAPPED_UNKNOWN, dtype=np.uint8)
         self.searched = None if self._search is None else np.zeros((n, n), dtype=bool)
         self.origin = (-(n // 2) * self.resolution_m, -(n // 2) * self.resolution_m)
         self.known = Box(n // 2, n // 2 + 1, n // 2, n // 2 + 1)
@@ -146,12 +143,12 @@ class OwnMap:
         local = self._local_pose(pose, box)
         seen = self._laser.free(local, ranges, returned)
         part = self.state[box.slices]
-        new_free = seen & (part == UNKNOWN_CELL)
-        part[new_free] = FREE_CELL
+        new_free = seen & (part == MAPPED_UNKNOWN)
+        part[new_free] = MAPPED_FREE
         new_walls = self._footprint(pose, footprint_m) if footprint_m > 0 else 0
         hits = self._endpoints(pose, ranges[returned], self._offsets[returned])
-        new_walls += int(np.count_nonzero(self.state[hits] == UNKNOWN_CELL))
-        self.state[hits] = OCCUPIED_CELL
+        new_walls += int(np.count_nonzero(self.state[hits] == MAPPED_UNKNOWN))
+        self.state[hits] = MAPPED_OCCUPIED
         k = self.known
         self.known = Box(min(k.r0, box.r0), max(k.r1, box.r1), min(k.c0, box.c0), max(k.c1, box.c1))
         if self._search is not None:
@@ -175,7 +172,7 @@ class OwnMap:
             self._window_box((x, y, heading), math.ceil((ahead + half_width_m) / self.resolution_m) + 2)
         )
         rows, cols = self._cells(pts)
-        self.state[rows, cols] = OCCUPIED_CELL
+        self.state[rows, cols] = MAPPED_OCCUPIED
 
     # -- internals -----------------------------------------------------------------------------------
     def _window_box(self, pose: tuple[float, float, float], half: int) -> Box:
@@ -203,7 +200,7 @@ class OwnMap:
         )
         if any(pad):
             widths = ((pad[0], pad[1]), (pad[2], pad[3]))
-            self.state = np.pad(self.state, widths, constant_values=UNKNOWN_CELL)
+            self.state = np.pad(self.state, widths, constant_values=MAPPED_UNKNOWN)
             if self.searched is not None:
                 self.searched = np.pad(self.searched, widths, constant_values=False)
             res = self.resolution_m
@@ -219,8 +216,8 @@ class OwnMap:
         part = self.state[r - k : r + k + 1, c - k : c + k + 1]  # inside: the laser window holds it
         centres = self.to_world(*np.indices(part.shape) + np.array([r - k, c - k])[:, None, None])
         under = np.hypot(centres[..., 0] - pose[0], centres[..., 1] - pose[1]) <= radius_m
-        new = under & (part == UNKNOWN_CELL)
-        part[new] = FREE_CELL
+        new = under & (part == MAPPED_UNKNOWN)
+        part[new] = MAPPED_FREE
         return int(np.count_nonzero(new))
 
     def _cells(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -247,4 +244,4 @@ class OwnMap:
         box = self._window_box(pose, self._search.half)
         seen = self._search.free(self._local_pose(pose, box), cut, returned[beams] & (ranges[beams] <= cut))
         part = self.searched[box.slices]
-        part |= seen & (self.state[box.slices] == FREE_CELL)
+        part |= seen & (self.state[box.slices] == MAPPED_FREE)

@@ -18,9 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL
 from realistic_indoor.checks import require_positive
 from realistic_indoor.sim.fields import distance_field
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED
 
 __all__ = ["CostConfig", "clearance", "costmap", "dijkstra", "trace_path"]
 
@@ -56,7 +56,7 @@ def clearance(state: np.ndarray, resolution_m: float) -> np.ndarray:
     Cost: the simulator's exact Euclidean distance transform
     (:func:`~realistic_indoor.sim.fields.distance_field`), about 15 ms per million cells.
     """
-    return distance_field(state == OCCUPIED_CELL, resolution_m)
+    return distance_field(state == MAPPED_OCCUPIED, resolution_m)
 
 
 def costmap(
@@ -79,7 +79,7 @@ def costmap(
     extra = np.clip((inscribed + config.decay_m - clearance_m) / config.decay_m, 0.0, 1.0) * config.decay_cost
     cost = 1.0 + extra
     cost[clearance_m < inscribed] = config.inscribed_cost
-    cost[state != FREE_CELL] = np.inf
+    cost[state != MAPPED_FREE] = np.inf
     return cost
 
 

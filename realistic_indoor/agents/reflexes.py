@@ -9,8 +9,9 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.agents.base import RobotSpec
-from realistic_indoor.agents.occupancy import FREE_CELL, OwnMap
+from realistic_indoor.agents.occupancy import OwnMap
 from realistic_indoor.sim.lidar import beam_offsets
+from realistic_indoor.sim.mapping import MAPPED_FREE
 
 __all__ = ["Reflexes"]
 
@@ -160,6 +161,6 @@ class Reflexes:
         for side in (-0.8, 0.0, 0.8):
             angle = heading + math.pi + side
             row, col = self.map.to_cell(x + reach * math.cos(angle), y + reach * math.sin(angle))
-            if not (0 <= row < h and 0 <= col < w) or self.map.state[row, col] != FREE_CELL:
+            if not (0 <= row < h and 0 <= col < w) or self.map.state[row, col] != MAPPED_FREE:
                 return False
         return True

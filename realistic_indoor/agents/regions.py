@@ -15,12 +15,12 @@ from typing import NamedTuple
 import numpy as np
 from scipy import ndimage
 
-from realistic_indoor.agents.occupancy import FREE_CELL
 from realistic_indoor.checks import require_positive
+from realistic_indoor.sim.mapping import MAPPED_FREE
 
-__all__ = ["CORRIDOR", "HALL", "ROOM", "RegionConfig", "Regions", "find_regions"]
+__all__ = ["CORRIDOR_REGION", "HALL_REGION", "ROOM_REGION", "RegionConfig", "Regions", "find_regions"]
 
-ROOM, CORRIDOR, HALL = 0, 1, 2
+ROOM_REGION, CORRIDOR_REGION, HALL_REGION = 0, 1, 2
 """Classes of a region (:attr:`Regions.kinds`)."""
 
 _EIGHT = np.ones((3, 3), dtype=bool)
@@ -61,8 +61,8 @@ class Regions(NamedTuple):
 
     Attributes:
         labels: ``(H, W)`` int32 region number (1..count) of each core cell, 0 elsewhere.
-        kinds: ``(count + 1,)`` class of each region (:data:`ROOM`, :data:`CORRIDOR`,
-            :data:`HALL`); entry 0 (no region) is :data:`ROOM`.
+        kinds: ``(count + 1,)`` class of each region (:data:`ROOM_REGION`, :data:`CORRIDOR_REGION`,
+            :data:`HALL_REGION`); entry 0 (no region) is :data:`ROOM_REGION`.
         length_m: ``(count + 1,)`` length of each region's core along its main axis (m).
         width_m: ``(count + 1,)`` width across it (m).
     """
@@ -79,7 +79,7 @@ class Regions(NamedTuple):
 
     def circulation(self) -> np.ndarray:
         """Core cells of corridors and halls (bool)."""
-        return self.kinds[self.labels] != ROOM
+        return self.kinds[self.labels] != ROOM_REGION
 
 
 def find_regions(
@@ -97,17 +97,17 @@ def find_regions(
         The regions. Cost: a labelling and a few per-label sums over the map.
     """
     c = config or RegionConfig()
-    core = (state == FREE_CELL) & (clearance_m >= c.door_half_width_m)
+    core = (state == MAPPED_FREE) & (clearance_m >= c.door_half_width_m)
     labels, count = ndimage.label(core, structure=_EIGHT)
     length, width, area = _shape(labels, count, resolution_m)
     rows, cols = np.nonzero(labels)
     widest = np.zeros(count + 1)
     np.maximum.at(widest, labels[rows, cols], clearance_m[rows, cols])
-    kinds = np.full(count + 1, ROOM, dtype=np.int8)
+    kinds = np.full(count + 1, ROOM_REGION, dtype=np.int8)
     corridor = (length[1:] >= c.corridor_length_m) & (length[1:] >= c.corridor_elongation * width[1:])
     hall = (widest[1:] >= c.hall_half_width_m) & (area[1:] >= c.hall_area_m2)
-    kinds[1:][corridor] = CORRIDOR
-    kinds[1:][hall & ~corridor] = HALL
+    kinds[1:][corridor] = CORRIDOR_REGION
+    kinds[1:][hall & ~corridor] = HALL_REGION
     return Regions(labels.astype(np.int32, copy=False), kinds, length, width)
 
 

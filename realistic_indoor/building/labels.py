@@ -59,7 +59,7 @@ OUTSIDE = "outside"
 """The outside of a building seen as a room's neighbour: the graph node behind the exterior doors
 (``Building.graph(include_outside=True)``) and the neighbour of an exterior door in a model's
 connection table. (A :class:`~realistic_indoor.building.door.Door` to the outside has
-``room_b=None``; the simulator's raster calls the cells outside the plan ``OUTSIDE_CELL``.)"""
+``room_b=None``; the simulator's raster marks the cells outside the plan ``RASTER_OUTSIDE``.)"""
 
 INFERRED = "inferred"
 """Value of a building's ``metadata["semantic_labels"]`` when its semantic labels were inferred

@@ -34,8 +34,8 @@ COLOURS: dict[str, tuple[int, int, int]] = {
 }
 """RGB colour of each element of the view."""
 
-_PLAN_RANK = np.array([1, 2, 0], dtype=np.uint8)  # FREE, WALL, OUTSIDE -> pooling rank
-_MAP_RANK = np.array([0, 1, 2], dtype=np.uint8)  # UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED
+_PLAN_RANK = np.array([1, 2, 0], dtype=np.uint8)  # RASTER_FREE, RASTER_WALL, RASTER_OUTSIDE -> pooling rank
+_MAP_RANK = np.array([0, 1, 2], dtype=np.uint8)  # MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED
 _VICTIM_HALF_M = 0.2
 
 

@@ -20,9 +20,9 @@ from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
     DEFAULT_RESOLUTION_M,
     DEFAULT_WALL_THICKNESS_M,
-    FREE,
-    OUTSIDE,
-    WALL,
+    RASTER_FREE,
+    RASTER_OUTSIDE,
+    RASTER_WALL,
     OccupancyRaster,
     rasterize,
 )
@@ -42,7 +42,7 @@ FREE_THRESH = 0.196
 def map_image(raster: OccupancyRaster) -> np.ndarray:
     """The raster as a ROS map image: ``(H, W)`` uint8 grey levels, row 0 at the top (highest y)."""
     lut = np.full(256, UNKNOWN_PIXEL, dtype=np.uint8)
-    lut[FREE], lut[WALL], lut[OUTSIDE] = FREE_PIXEL, OCCUPIED_PIXEL, UNKNOWN_PIXEL
+    lut[RASTER_FREE], lut[RASTER_WALL], lut[RASTER_OUTSIDE] = FREE_PIXEL, OCCUPIED_PIXEL, UNKNOWN_PIXEL
     return lut[raster.grid[::-1]]
 
 

@@ -13,12 +13,12 @@ import math
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.raster import WALL
+from realistic_indoor.sim.raster import RASTER_WALL
 
-UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
+MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
 """States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
-T_WALL, T_OUTSIDE, T_FREE, T_REACHABLE = 0, 1, 2, 3
-"""What the ground truth lets a beam mark in a cell: free only if ``>= T_FREE``."""
+TRUTH_WALL, TRUTH_OUTSIDE, TRUTH_FREE, TRUTH_REACHABLE = 0, 1, 2, 3
+"""What the ground truth lets a beam mark in a cell: free only if ``>= TRUTH_FREE``."""
 STRIP = 32
 """Cells per row strip: ``todo[r, c // STRIP]`` counts the free cells of a strip still unknown,
 so a span walks past a fully observed strip, or the rest of one, in one step (most of a scan
@@ -54,10 +54,10 @@ def integrate_scan(
         new = 0
     new += _mark_beams(grid, pooled, k, targets, todo, px, py, dxs, dys, ts, closed)
     for i in range(n):
-        if kind[i] == WALL:
+        if kind[i] == RASTER_WALL:
             c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
             r = math.floor(py + (ts[i] + _NUDGE) * dys[i])
-            if 0 <= r < h and 0 <= c < w and targets[r, c] == T_WALL:
+            if 0 <= r < h and 0 <= c < w and targets[r, c] == TRUTH_WALL:
                 grid[r, c] = MAPPED_OCCUPIED
                 pooled[r // k, c // k] = MAPPED_OCCUPIED
     return new
@@ -74,12 +74,12 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
             if todo[r, c // STRIP] == 0:  # nothing left to mark in this strip: jump past it
                 c = (c // STRIP + 1) * STRIP
                 continue
-            if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
+            if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
                 grid[r, c] = MAPPED_FREE
                 todo[r, c // STRIP] -= 1
-                if pooled[r // k, c // k] == UNKNOWN:
+                if pooled[r // k, c // k] == MAPPED_UNKNOWN:
                     pooled[r // k, c // k] = MAPPED_FREE
-                if targets[r, c] == T_REACHABLE:
+                if targets[r, c] == TRUTH_REACHABLE:
                     new += 1
             c += 1
     return new
@@ -87,12 +87,12 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
 
 @njit(cache=True, nogil=True)
 def free_per_strip(targets):  # pragma: no cover - compiled
-    """Number of free cells (``targets >= T_FREE``) in each row strip of ``STRIP`` cells."""
+    """Number of free cells (``targets >= TRUTH_FREE``) in each row strip of ``STRIP`` cells."""
     h, w = targets.shape
     out = np.zeros((h, (w + STRIP - 1) // STRIP), dtype=np.int32)
     for r in range(h):
         for c in range(w):
-            if targets[r, c] >= T_FREE:
+            if targets[r, c] >= TRUTH_FREE:
                 out[r, c // STRIP] += 1
     return out
 
@@ -220,12 +220,12 @@ def _walk_and_mark(grid, pooled, k, targets, todo, px, py, dx, dy, t0, t1, h, w)
     t_r = t0 + ((r + 1 - y) if dy > 0 else (y - r)) * t_dr if dy != 0.0 else 1e30
     new = 0
     while 0 <= r < h and 0 <= c < w:
-        if grid[r, c] == UNKNOWN and targets[r, c] >= T_FREE:
+        if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
             grid[r, c] = MAPPED_FREE
             todo[r, c // STRIP] -= 1
-            if pooled[r // k, c // k] == UNKNOWN:
+            if pooled[r // k, c // k] == MAPPED_UNKNOWN:
                 pooled[r // k, c // k] = MAPPED_FREE
-            if targets[r, c] == T_REACHABLE:
+            if targets[r, c] == TRUTH_REACHABLE:
                 new += 1
         if min(t_c, t_r) >= t1:
             break
@@ -242,12 +242,12 @@ def _walk_and_mark(grid, pooled, k, targets, todo, px, py, dx, dy, t0, t1, h, w)
 def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no cover - compiled
     """Sample the pooled map on a square grid turned to the heading (pooled-cell units).
 
-    Pixel ``(0, 0)`` is ahead and to the left; pixels off the map show ``lut[UNKNOWN]``.
+    Pixel ``(0, 0)`` is ahead and to the left; pixels off the map show ``lut[MAPPED_UNKNOWN]``.
     """
     h, w = pooled.shape
     s = out.shape[0]
     half = (s - 1) / 2.0
-    unknown = lut[UNKNOWN]
+    unknown = lut[MAPPED_UNKNOWN]
     col_dx = step * sin_h  # one pixel to the right: the heading turned clockwise
     col_dy = -step * cos_h
     for i in range(s):

@@ -10,7 +10,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.checks import require_int, require_positive, require_range
-from realistic_indoor.sim.raster import WALL
+from realistic_indoor.sim.raster import RASTER_WALL
 from realistic_indoor.sim.raycast import Raycaster, RayHits
 
 __all__ = ["Lidar", "LidarConfig", "Scan", "beam_offsets"]
@@ -82,7 +82,7 @@ class Scan(NamedTuple):
     @property
     def returned(self) -> np.ndarray:
         """Which beams returned from a wall (bool, ``(n_beams,)``)."""
-        return self.true.kind == WALL
+        return self.true.kind == RASTER_WALL
 
 
 class Lidar:
@@ -135,7 +135,7 @@ def _readings(true_m, kind, noise, noise_std_m, max_range_m, out):  # pragma: no
     """Readings: returned beams get their range plus noise, clipped to the range; others read max."""
     noisy = noise.shape[0] > 0
     for i in range(true_m.shape[0]):
-        if kind[i] == WALL:
+        if kind[i] == RASTER_WALL:
             r = true_m[i] + noise_std_m * noise[i] if noisy else true_m[i]
             out[i] = min(max(r, 0.0), max_range_m)
         else:

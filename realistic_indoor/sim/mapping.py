@@ -18,16 +18,16 @@ from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
     MAPPED_OCCUPIED,
-    T_FREE,
-    T_OUTSIDE,
-    T_REACHABLE,
-    T_WALL,
-    UNKNOWN,
+    MAPPED_UNKNOWN,
+    TRUTH_FREE,
+    TRUTH_OUTSIDE,
+    TRUTH_REACHABLE,
+    TRUTH_WALL,
     free_per_strip,
     integrate_scan,
     render_local,
 )
-from realistic_indoor.sim.raster import FREE, WALL
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_WALL
 
 if TYPE_CHECKING:
     from realistic_indoor.sim.lidar import Scan
@@ -36,10 +36,10 @@ if TYPE_CHECKING:
 __all__ = [
     "MAPPED_FREE",
     "MAPPED_OCCUPIED",
+    "MAPPED_UNKNOWN",
     "PIXEL_FREE",
     "PIXEL_OCCUPIED",
     "PIXEL_UNKNOWN",
-    "UNKNOWN",
     "FreeSpaceMarker",
     "LocalMapConfig",
     "RobotMap",
@@ -111,7 +111,7 @@ class RobotMap:
     def grid(self) -> np.ndarray:
         """The map: ``(H, W)`` uint8 cell states, the world raster's cells; read-only, kept current.
 
-        States are :data:`UNKNOWN`, :data:`MAPPED_FREE` and :data:`MAPPED_OCCUPIED`.
+        States are :data:`MAPPED_UNKNOWN`, :data:`MAPPED_FREE` and :data:`MAPPED_OCCUPIED`.
         """
         view = self._grid.view()
         view.setflags(write=False)
@@ -135,8 +135,8 @@ class RobotMap:
 
     def reset(self) -> None:
         """Forget everything: every cell unknown, coverage 0."""
-        self._grid.fill(UNKNOWN)
-        self._pooled.fill(UNKNOWN)
+        self._grid.fill(MAPPED_UNKNOWN)
+        self._pooled.fill(MAPPED_UNKNOWN)
         self._todo[...] = self._todo_at_start
         self._observed = 0
 
@@ -248,8 +248,8 @@ class FreeSpaceMarker:
         self.shape = (int(shape[0]), int(shape[1]))
         self.resolution_m = resolution_m
         self._cos, self._sin, self._closed = _beam_table(offsets)
-        self._kind = np.full(len(offsets), FREE, dtype=np.uint8)  # no beam marks a wall
-        self._targets = np.full(self.shape, T_FREE, dtype=np.uint8)
+        self._kind = np.full(len(offsets), RASTER_FREE, dtype=np.uint8)  # no beam marks a wall
+        self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
         self._todo_at_start = free_per_strip(self._targets)
         self._todo = self._todo_at_start.copy()
         self._grid = np.zeros(self.shape, dtype=np.uint8)
@@ -269,7 +269,7 @@ class FreeSpaceMarker:
             ``(rows, cols)`` bool array, ``True`` on the swept cells; a new array. Cost: about
             1 ns per cell of the fan, as :meth:`RobotMap.update`.
         """
-        self._grid.fill(UNKNOWN)
+        self._grid.fill(MAPPED_UNKNOWN)
         self._todo[...] = self._todo_at_start
         x, y, theta = pose
         res = self.resolution_m
@@ -303,8 +303,8 @@ def _beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
 def _targets(world: World) -> np.ndarray:
     """What a beam may mark in each cell: wall, outside, free, or free and reachable."""
     grid = world.raster.grid
-    out = np.full(grid.shape, T_OUTSIDE, dtype=np.uint8)
-    out[grid == WALL] = T_WALL
-    out[grid == FREE] = T_FREE
-    out[world.reachable] = T_REACHABLE
+    out = np.full(grid.shape, TRUTH_OUTSIDE, dtype=np.uint8)
+    out[grid == RASTER_WALL] = TRUTH_WALL
+    out[grid == RASTER_FREE] = TRUTH_FREE
+    out[world.reachable] = TRUTH_REACHABLE
     return out

@@ -14,9 +14,9 @@ from realistic_indoor.errors import ConfigError
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
-__all__ = ["FREE", "MAX_RASTER_CELLS", "OUTSIDE", "WALL", "OccupancyRaster", "rasterize"]
+__all__ = ["MAX_RASTER_CELLS", "RASTER_FREE", "RASTER_OUTSIDE", "RASTER_WALL", "OccupancyRaster", "rasterize"]
 
-FREE, WALL, OUTSIDE = 0, 1, 2
+RASTER_FREE, RASTER_WALL, RASTER_OUTSIDE = 0, 1, 2
 """Cell values (uint8): floor inside a room or doorway, wall, outside the building."""
 
 DEFAULT_RESOLUTION_M = 0.05
@@ -33,7 +33,7 @@ class OccupancyRaster:
     """A grid of cells over a building's footprint.
 
     Attributes:
-        grid: ``(H, W)`` uint8 array of :data:`FREE`, :data:`WALL` and :data:`OUTSIDE`; row 0 is
+        grid: ``(H, W)`` uint8 array of :data:`RASTER_FREE`, :data:`RASTER_WALL` and :data:`RASTER_OUTSIDE`; row 0 is
             the lowest ``y`` (the first row is the bottom of the plan), column 0 the lowest ``x``.
             Read-only.
         resolution_m: Side of a cell (m).
@@ -92,14 +92,14 @@ class OccupancyRaster:
         return (r >= 0) & (r < h) & (c >= 0) & (c < w)
 
     def value_at(self, xy: np.ndarray | tuple[float, float]) -> np.ndarray:
-        """Cell values at world points; points off the grid read :data:`OUTSIDE`."""
+        """Cell values at world points; points off the grid read :data:`RASTER_OUTSIDE`."""
         row, col = self.world_to_cell(xy)
         inside = self.in_bounds(row, col)
-        out = np.full(np.shape(row), OUTSIDE, dtype=np.uint8)
+        out = np.full(np.shape(row), RASTER_OUTSIDE, dtype=np.uint8)
         out[inside] = self.grid[row[inside], col[inside]]
         return out
 
-    def area_m2(self, value: int = FREE) -> float:
+    def area_m2(self, value: int = RASTER_FREE) -> float:
         """Total area of the cells holding ``value`` (m2)."""
         return float(np.count_nonzero(self.grid == value)) * self.cell_area_m2
 
@@ -154,9 +154,9 @@ def rasterize(
         rings += list(quads)
         weights += [_WALL_WEIGHT] * len(quads)
     cover = _cover_count(rings, np.array(weights), (h, w), origin, resolution_m)
-    grid = np.full((h, w), OUTSIDE, dtype=np.uint8)
-    grid[cover > 0] = FREE
-    grid[cover >= _WALL_WEIGHT] = WALL
+    grid = np.full((h, w), RASTER_OUTSIDE, dtype=np.uint8)
+    grid[cover > 0] = RASTER_FREE
+    grid[cover >= _WALL_WEIGHT] = RASTER_WALL
     grid.setflags(write=False)
     return OccupancyRaster(grid, float(resolution_m), (float(x0), float(y0)))
 

@@ -10,11 +10,11 @@ from numba import njit
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.fields import distance_field
-from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, OccupancyRaster
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, OccupancyRaster
 
 __all__ = ["RayHits", "Raycaster", "free_distance_cells"]
 
-_WALL_CODE, _OUTSIDE_CODE = 254, 255
+_SKIP_WALL, _SKIP_OUTSIDE = 254, 255
 """Codes of obstacle cells in the skip field; free cells hold their safe step, 0 to 253 cells."""
 _SAFETY = 1.5
 """Margin (cells) taken off the distance field: a point anywhere in a cell lies within
@@ -30,9 +30,9 @@ class RayHits(NamedTuple):
     Attributes:
         range_m: ``(N,)`` float32 distance (m) from the origin to the first non-free cell on
             the ray, or the maximum range when the ray met nothing closer.
-        kind: ``(N,)`` uint8: :data:`~realistic_indoor.sim.raster.WALL` when the ray hit a wall,
-            :data:`~realistic_indoor.sim.raster.OUTSIDE` when it left the building (through an
-            exterior door, or off the grid), :data:`~realistic_indoor.sim.raster.FREE` when it
+        kind: ``(N,)`` uint8: :data:`~realistic_indoor.sim.raster.RASTER_WALL` when the ray hit a wall,
+            :data:`~realistic_indoor.sim.raster.RASTER_OUTSIDE` when it left the building (through an
+            exterior door, or off the grid), :data:`~realistic_indoor.sim.raster.RASTER_FREE` when it
             met nothing within the maximum range.
     """
 
@@ -165,7 +165,7 @@ def free_distance_cells(raster: OccupancyRaster) -> np.ndarray:
 
     Zero on non-free cells; float32 ``(H, W)``, a new array (:func:`~realistic_indoor.sim.fields.distance_field`).
     """
-    return distance_field(raster.grid != FREE)
+    return distance_field(raster.grid != RASTER_FREE)
 
 
 def _skip_field(grid: np.ndarray, dist: np.ndarray) -> np.ndarray:
@@ -176,9 +176,9 @@ def _skip_field(grid: np.ndarray, dist: np.ndarray) -> np.ndarray:
     down (at most 253 cells). One byte per cell keeps the field in cache, and one read per
     step tells the marching loop both what a cell is and how far it may jump.
     """
-    skip = np.clip(np.floor(dist - _SAFETY), 0, _WALL_CODE - 1).astype(np.uint8)
-    skip[grid == WALL] = _WALL_CODE
-    skip[grid == OUTSIDE] = _OUTSIDE_CODE
+    skip = np.clip(np.floor(dist - _SAFETY), 0, _SKIP_WALL - 1).astype(np.uint8)
+    skip[grid == RASTER_WALL] = _SKIP_WALL
+    skip[grid == RASTER_OUTSIDE] = _SKIP_OUTSIDE
     skip.setflags(write=False)
     return skip
 
@@ -196,10 +196,10 @@ def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
         c = math.floor(x)
         r = math.floor(y)
         if r < 0 or r >= h or c < 0 or c >= w:
-            return t, OUTSIDE
+            return t, RASTER_OUTSIDE
         s = skip[r, c]
-        if s >= _WALL_CODE:
-            return t, WALL if s == _WALL_CODE else OUTSIDE
+        if s >= _SKIP_WALL:
+            return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE
         if s > 0:
             t += s
         else:
@@ -216,7 +216,7 @@ def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
             else:
                 ty = _BIG
             t += min(tx, ty) + _BOUNDARY_NUDGE
-    return t_max, FREE
+    return t_max, RASTER_FREE
 
 
 @njit(cache=True, nogil=True, fastmath=True)
@@ -245,4 +245,4 @@ def _line_of_sight(skip, px, py, tx, ty, out):  # pragma: no cover - compiled
         end_c = math.floor(tx[i])
         hit_r = math.floor(py + t * ey / length)
         hit_c = math.floor(px + t * ex / length)
-        out[i] = kind == FREE or (hit_r == end_r and hit_c == end_c)
+        out[i] = kind == RASTER_FREE or (hit_r == end_r and hit_c == end_c)

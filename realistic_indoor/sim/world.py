@@ -16,7 +16,7 @@ from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
     DEFAULT_RESOLUTION_M,
     DEFAULT_WALL_THICKNESS_M,
-    FREE,
+    RASTER_FREE,
     OccupancyRaster,
     rasterize,
 )
@@ -196,7 +196,7 @@ class World:
         return (x, y, theta)
 
     def _reachable_from(self, pose: Pose) -> np.ndarray:
-        labels, _ = ndimage.label(self.raster.grid == FREE)
+        labels, _ = ndimage.label(self.raster.grid == RASTER_FREE)
         row, col = self.raster.world_to_cell(pose[:2])
         return labels == labels[row, col]
 

@@ -3,19 +3,19 @@ import math
 import numpy as np
 
 from realistic_indoor.agents.frontiers import find_frontiers
-from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL, UNKNOWN_CELL
 from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, MAPPED_UNKNOWN
 
 
 def _room(h=30, w=40):
-    state = np.full((h, w), FREE_CELL, dtype=np.uint8)
-    state[0, :] = state[-1, :] = state[:, 0] = state[:, -1] = OCCUPIED_CELL
+    state = np.full((h, w), MAPPED_FREE, dtype=np.uint8)
+    state[0, :] = state[-1, :] = state[:, 0] = state[:, -1] = MAPPED_OCCUPIED
     return state
 
 
 def test_costmap__lethal_unknown_and_walls_expensive_near_walls():
     state = _room()
-    state[10:20, 30:35] = UNKNOWN_CELL
+    state[10:20, 30:35] = MAPPED_UNKNOWN
     cost = costmap(state, clearance(state, 0.1), 0.1, 0.25, CostConfig())
     assert np.isinf(cost[0, 5]) and np.isinf(cost[15, 32])
     assert cost[1, 20] == CostConfig().inscribed_cost  # 0.1 m from the wall: inside the robot's radius
@@ -25,8 +25,8 @@ def test_costmap__lethal_unknown_and_walls_expensive_near_walls():
 
 def test_dijkstra__goes_around_a_wall_through_the_gap():
     state = _room()
-    state[1:25, 20] = OCCUPIED_CELL  # a wall with a gap at rows 25-28
-    cost = np.where(state == FREE_CELL, 1.0, np.inf)
+    state[1:25, 20] = MAPPED_OCCUPIED  # a wall with a gap at rows 25-28
+    cost = np.where(state == MAPPED_FREE, 1.0, np.inf)
     goals = np.zeros(state.shape, dtype=bool)
     goals[5, 30] = True
     dist, parent, goal = dijkstra(cost, (5, 10), goals, first_only=True)
@@ -36,13 +36,13 @@ def test_dijkstra__goes_around_a_wall_through_the_gap():
     assert path[:, 0].max() >= 25  # through the gap
     steps = np.hypot(*np.diff(path, axis=0).T)
     assert math.isclose(steps.sum(), dist[5, 30])
-    assert np.all(state[path[:, 0], path[:, 1]] == FREE_CELL)
+    assert np.all(state[path[:, 0], path[:, 1]] == MAPPED_FREE)
 
 
 def test_dijkstra__unreachable_goal_gives_minus_one():
     state = _room()
-    state[:, 20] = OCCUPIED_CELL
-    cost = np.where(state == FREE_CELL, 1.0, np.inf)
+    state[:, 20] = MAPPED_OCCUPIED
+    cost = np.where(state == MAPPED_FREE, 1.0, np.inf)
     goals = np.zeros(state.shape, dtype=bool)
     goals[5, 30] = True
     _, _, goal = dijkstra(cost, (5, 10), goals, first_only=False)
@@ -50,10 +50,10 @@ def test_dijkstra__unreachable_goal_gives_minus_one():
 
 
 def test_find_frontiers__boundary_between_free_and_unknown():
-    state = np.full((20, 20), UNKNOWN_CELL, dtype=np.uint8)
-    state[5:15, 5:15] = FREE_CELL
-    state[5:15, 5] = OCCUPIED_CELL  # a wall on the west side: no frontier there
-    state[2, 2] = FREE_CELL  # a lone free cell: too small a frontier
+    state = np.full((20, 20), MAPPED_UNKNOWN, dtype=np.uint8)
+    state[5:15, 5:15] = MAPPED_FREE
+    state[5:15, 5] = MAPPED_OCCUPIED  # a wall on the west side: no frontier there
+    state[2, 2] = MAPPED_FREE  # a lone free cell: too small a frontier
     f = find_frontiers(state, min_cells=3)
     assert f.count == 1
     cells = np.argwhere(f.mask)
@@ -63,7 +63,7 @@ def test_find_frontiers__boundary_between_free_and_unknown():
 
 
 def test_find_frontiers__search_adds_the_unswept_floor():
-    state = np.full((20, 20), FREE_CELL, dtype=np.uint8)
+    state = np.full((20, 20), MAPPED_FREE, dtype=np.uint8)
     searched = np.zeros_like(state, dtype=bool)
     searched[:, :10] = True
     assert find_frontiers(state).count == 0

@@ -5,8 +5,9 @@ import numpy as np
 from agent_helpers import drive
 
 from realistic_indoor.agents import make_agent
-from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL, UNKNOWN_CELL, OwnMap
-from realistic_indoor.sim.raster import FREE, OUTSIDE
+from realistic_indoor.agents.occupancy import OwnMap
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, MAPPED_UNKNOWN
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE
 
 
 def _to_world_cells(agent_map, env, state):
@@ -29,13 +30,13 @@ def test_own_map__agrees_with_the_ground_truth(hall_office):
     agent = make_agent("frontier", env)
     _, info = drive(env, agent)
     world = env.unwrapped.simulation.world
-    rows, cols = _to_world_cells(agent.map, env, FREE_CELL)
-    inside = world.raster.grid[rows, cols] != OUTSIDE  # the floor seen through the entrance is outside
-    assert np.mean(world.raster.grid[rows, cols][inside] == FREE) > 0.98
+    rows, cols = _to_world_cells(agent.map, env, MAPPED_FREE)
+    inside = world.raster.grid[rows, cols] != RASTER_OUTSIDE  # the floor seen through the entrance is outside
+    assert np.mean(world.raster.grid[rows, cols][inside] == RASTER_FREE) > 0.98
     cell_m2 = agent.map.resolution_m**2
     seen_m2 = np.count_nonzero(world.reachable[rows, cols]) * cell_m2
     assert abs(seen_m2 - info["observed_area_m2"]) < 0.05 * info["observed_area_m2"]
-    rows, cols = _to_world_cells(agent.map, env, OCCUPIED_CELL)
+    rows, cols = _to_world_cells(agent.map, env, MAPPED_OCCUPIED)
     near_wall = world.clearance_m[rows, cols] <= agent.map.resolution_m
     assert np.mean(near_wall) > 0.95
 
@@ -49,9 +50,9 @@ def test_own_map__grows_as_the_robot_travels():
         m.integrate((x, 0.0, 0.0), ranges)
     assert m.state.shape[1] > shape[1]
     r, c = m.to_cell(44.0, 0.0)
-    assert m.state[r, c] == FREE_CELL
+    assert m.state[r, c] == MAPPED_FREE
     r, c = m.to_cell(-2.0, 0.0)
-    assert m.state[r, c] == UNKNOWN_CELL  # behind the first scan's field of view
+    assert m.state[r, c] == MAPPED_UNKNOWN  # behind the first scan's field of view
 
 
 def test_own_map__marks_the_end_of_returned_beams():
@@ -59,9 +60,9 @@ def test_own_map__marks_the_end_of_returned_beams():
     m = OwnMap(offsets, max_range_m=10.0)
     m.integrate((0.0, 0.0, 0.0), np.array([3.0, 3.0, 3.0]))
     r, c = m.to_cell(3.05, 0.0)
-    assert m.state[r, c] == OCCUPIED_CELL
+    assert m.state[r, c] == MAPPED_OCCUPIED
     r, c = m.to_cell(2.5, 0.0)
-    assert m.state[r, c] == FREE_CELL
+    assert m.state[r, c] == MAPPED_FREE
 
 
 def test_own_map__search_sensor_sweeps_a_shorter_narrower_fan():
@@ -70,7 +71,7 @@ def test_own_map__search_sensor_sweeps_a_shorter_narrower_fan():
     m.integrate((0.0, 0.0, 0.0), np.full(109, 10.0))
     for (x, y), swept in (((2.0, 0.0), True), ((5.0, 0.0), False), ((0.0, 2.0), False)):
         r, c = m.to_cell(x, y)
-        assert m.state[r, c] == FREE_CELL
+        assert m.state[r, c] == MAPPED_FREE
         assert m.searched[r, c] == swept
 
 
@@ -80,4 +81,4 @@ def test_own_map__the_robots_footprint_is_free():
     m.integrate((0.0, 0.0, 0.0), np.full(9, 5.0), footprint_m=0.25)
     for x, y, free in ((-0.2, 0.0, True), (0.0, -0.2, True), (-0.4, 0.0, False)):
         r, c = m.to_cell(x, y)
-        assert (m.state[r, c] == FREE_CELL) == free
+        assert (m.state[r, c] == MAPPED_FREE) == free

@@ -4,21 +4,21 @@ import pytest
 from agent_helpers import drive, hall_and_corridor
 
 from realistic_indoor.agents import make_agent
-from realistic_indoor.agents.occupancy import FREE_CELL, OCCUPIED_CELL
 from realistic_indoor.agents.planning import clearance
-from realistic_indoor.agents.regions import CORRIDOR, HALL, ROOM, find_regions
+from realistic_indoor.agents.regions import CORRIDOR_REGION, HALL_REGION, ROOM_REGION, find_regions
 from realistic_indoor.agents.structure import StructureConfig
 from realistic_indoor.agents.utility import UtilityConfig
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED
 
 
 def _plan_map():
     """A 7 x 8 m hall, a 2 x 16 m corridor east of it, a 4 m room south of the corridor (0.1 m cells)."""
-    s = np.full((120, 260), OCCUPIED_CELL, dtype=np.uint8)
-    s[20:100, 10:80] = FREE_CELL  # the hall
-    s[50:70, 80:241] = FREE_CELL  # the corridor, open to the hall over its whole width
-    s[5:45, 140:180] = FREE_CELL  # the room
-    s[45:50, 155:164] = FREE_CELL  # its 0.9 m door onto the corridor
+    s = np.full((120, 260), MAPPED_OCCUPIED, dtype=np.uint8)
+    s[20:100, 10:80] = MAPPED_FREE  # the hall
+    s[50:70, 80:241] = MAPPED_FREE  # the corridor, open to the hall over its whole width
+    s[5:45, 140:180] = MAPPED_FREE  # the room
+    s[45:50, 155:164] = MAPPED_FREE  # its 0.9 m door onto the corridor
     return s
 
 
@@ -28,17 +28,17 @@ def test_find_regions__doors_split_rooms_from_the_circulation():
     hall, corridor, room = regions.labels[60, 40], regions.labels[60, 200], regions.labels[25, 160]
     assert hall == corridor  # a wide opening joins them
     assert room != corridor and room > 0
-    assert regions.kinds[room] == ROOM
-    assert regions.kinds[corridor] in (CORRIDOR, HALL)
+    assert regions.kinds[room] == ROOM_REGION
+    assert regions.kinds[corridor] in (CORRIDOR_REGION, HALL_REGION)
 
 
 def test_find_regions__a_lone_corridor_is_long_and_thin_a_square_hall_is_wide():
-    state = np.full((140, 200), OCCUPIED_CELL, dtype=np.uint8)
-    state[10:30, 10:190] = FREE_CELL  # 2 x 18 m
-    state[50:130, 20:100] = FREE_CELL  # 8 x 8 m
+    state = np.full((140, 200), MAPPED_OCCUPIED, dtype=np.uint8)
+    state[10:30, 10:190] = MAPPED_FREE  # 2 x 18 m
+    state[50:130, 20:100] = MAPPED_FREE  # 8 x 8 m
     regions = find_regions(state, clearance(state, 0.1), 0.1)
     corridor, hall = regions.labels[20, 100], regions.labels[90, 60]
-    assert regions.kinds[corridor] == CORRIDOR and regions.kinds[hall] == HALL
+    assert regions.kinds[corridor] == CORRIDOR_REGION and regions.kinds[hall] == HALL_REGION
     assert regions.length_m[corridor] == pytest.approx(17.0, abs=0.2)  # 18 m less the 0.5 m margins
     assert regions.width_m[corridor] == pytest.approx(1.0, abs=0.1)
 

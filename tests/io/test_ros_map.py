@@ -6,7 +6,7 @@ import pytest
 from realistic_indoor.building import Building, Door, Room
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.io import save
-from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, rasterize
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, rasterize
 
 FREE_PX, WALL_PX, UNKNOWN_PX = 254, 0, 205
 
@@ -107,7 +107,7 @@ def test_ros_map__pixels_match_the_raster_at_ros_coordinates(tiny_office, ros_ma
     _, image, meta = ros_map
     raster = rasterize(tiny_office)
     assert meta["origin"][:2] == pytest.approx(raster.origin, abs=1e-9)
-    grey = {FREE: FREE_PX, WALL: WALL_PX, OUTSIDE: UNKNOWN_PX}
+    grey = {RASTER_FREE: FREE_PX, RASTER_WALL: WALL_PX, RASTER_OUTSIDE: UNKNOWN_PX}
     rng = np.random.default_rng(0)
     points = rng.uniform((-0.5, -0.5), (10.5, 6.5), size=(500, 2))
     values = raster.value_at(points)

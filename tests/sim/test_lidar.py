@@ -5,7 +5,7 @@ import pytest
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.lidar import Lidar, LidarConfig, beam_offsets
-from realistic_indoor.sim.raster import OUTSIDE, WALL, rasterize
+from realistic_indoor.sim.raster import RASTER_OUTSIDE, RASTER_WALL, rasterize
 from realistic_indoor.sim.raycast import Raycaster
 
 
@@ -55,7 +55,7 @@ def test_lidar__beam_through_the_entrance_reads_max_range(tiny_raycaster):
     lidar = Lidar(LidarConfig(fov_rad=0.1, n_beams=1, max_range_m=10.0))
     scan = lidar.scan(tiny_raycaster, (3.0, 1.0, math.pi), np.random.default_rng(0))
     assert scan.ranges_m[0] == 10.0
-    assert scan.true.kind[0] == OUTSIDE and scan.true.range_m[0] == pytest.approx(3.0, abs=0.05)
+    assert scan.true.kind[0] == RASTER_OUTSIDE and scan.true.range_m[0] == pytest.approx(3.0, abs=0.05)
 
 
 def test_lidar__noise_is_gaussian_with_the_configured_spread(tiny_raycaster):
@@ -73,7 +73,7 @@ def test_lidar__same_rng_seed_gives_the_same_scan(tiny_raycaster):
     a = lidar.scan(tiny_raycaster, (2.0, 4.0, 0.3), np.random.default_rng(3))
     b = lidar.scan(tiny_raycaster, (2.0, 4.0, 0.3), np.random.default_rng(3))
     assert a.ranges_m.tobytes() == b.ranges_m.tobytes()
-    assert a.ranges_m.dtype == np.float32 and (a.true.kind == WALL).any()
+    assert a.ranges_m.dtype == np.float32 and (a.true.kind == RASTER_WALL).any()
 
 
 @pytest.mark.parametrize(

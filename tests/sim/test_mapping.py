@@ -10,15 +10,15 @@ from realistic_indoor.sim.lidar import Lidar, LidarConfig
 from realistic_indoor.sim.mapping import (
     MAPPED_FREE,
     MAPPED_OCCUPIED,
+    MAPPED_UNKNOWN,
     PIXEL_FREE,
     PIXEL_OCCUPIED,
     PIXEL_UNKNOWN,
-    UNKNOWN,
     FreeSpaceMarker,
     LocalMapConfig,
     RobotMap,
 )
-from realistic_indoor.sim.raster import FREE, WALL
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_WALL
 from realistic_indoor.sim.world import World
 
 RING = LidarConfig(fov_rad=2 * math.pi, n_beams=360, noise_std_m=0.0)
@@ -38,7 +38,7 @@ def _room_cells(world, room):
     import shapely
 
     inside = shapely.contains_xy(room.polygon, centres[..., 0], centres[..., 1])
-    return inside & (world.raster.grid == FREE)
+    return inside & (world.raster.grid == RASTER_FREE)
 
 
 def test_robot_map__a_full_turn_in_a_closed_room_sees_the_whole_room(tiny_office):
@@ -60,8 +60,8 @@ def test_robot_map__marks_walls_where_beams_return_and_free_only_on_free_floor(o
     for pose in [(1.25, 3.0, 1.5), (6.0, 6.25, 0.0), (12.0, 6.25, math.pi), (4.5, 2.5, 2.0)]:
         m.update(_scan_from(world, pose))
     truth = world.raster.grid
-    assert (truth[m.grid == MAPPED_OCCUPIED] == WALL).all()
-    assert (truth[m.grid == MAPPED_FREE] == FREE).all()
+    assert (truth[m.grid == MAPPED_OCCUPIED] == RASTER_WALL).all()
+    assert (truth[m.grid == MAPPED_FREE] == RASTER_FREE).all()
     assert (m.grid == MAPPED_OCCUPIED).sum() > 500
 
 
@@ -103,7 +103,7 @@ def test_robot_map__reset_forgets_everything(tiny_world):
     m = RobotMap(tiny_world)
     m.update(_scan_from(tiny_world, tiny_world.start_pose))
     m.reset()
-    assert m.coverage == 0.0 and (m.grid == UNKNOWN).all()
+    assert m.coverage == 0.0 and (m.grid == MAPPED_UNKNOWN).all()
     assert (m.local_view(tiny_world.start_pose) == PIXEL_UNKNOWN).all()
 
 
@@ -199,8 +199,8 @@ def test_free_space_marker__is_the_robot_maps_fan_without_ground_truth(office, c
         m = RobotMap(world)
         m.update(scan)
         swept = marker.free((pose[0] - x0, pose[1] - y0, pose[2]), scan.true.range_m)
-        assert np.array_equal(m.grid == MAPPED_FREE, swept & (world.raster.grid == FREE))
-        assert (swept & (world.raster.grid != FREE)).any()  # no ground truth: beams end in walls
+        assert np.array_equal(m.grid == MAPPED_FREE, swept & (world.raster.grid == RASTER_FREE))
+        assert (swept & (world.raster.grid != RASTER_FREE)).any()  # no ground truth: beams end in walls
 
 
 def test_free_space_marker__checks_its_grid():

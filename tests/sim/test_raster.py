@@ -7,7 +7,7 @@ from sim_buildings import corridor_office, rotated
 
 from realistic_indoor.building import Building
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, rasterize
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, rasterize
 
 
 def _closed(building: Building) -> Building:
@@ -18,15 +18,22 @@ def _closed(building: Building) -> Building:
 def test_rasterize__cells_inside_rooms_are_free_outside_is_outside(tiny_office):
     r = rasterize(tiny_office)
     points = np.array([(2.0, 4.0), (7.0, 3.0), (5.0, 1.0), (-0.3, 1.0), (11.0, 7.0), (5.0, 6.4)])
-    assert list(r.value_at(points)) == [FREE, FREE, FREE, OUTSIDE, OUTSIDE, OUTSIDE]
+    assert list(r.value_at(points)) == [
+        RASTER_FREE,
+        RASTER_FREE,
+        RASTER_FREE,
+        RASTER_OUTSIDE,
+        RASTER_OUTSIDE,
+        RASTER_OUTSIDE,
+    ]
 
 
 def test_rasterize__walls_at_room_boundaries_with_gaps_at_doors(tiny_office):
     r = rasterize(tiny_office)
     walls = np.array([(5.0, 4.0), (1.0, 2.0), (0.0, 0.2), (10.0, 1.0), (4.0, 6.0)])
-    assert (r.value_at(walls) == WALL).all()
+    assert (r.value_at(walls) == RASTER_WALL).all()
     doorways = np.array([(2.5, 2.0), (7.5, 2.0), (2.2, 1.98), (0.03, 1.0)])
-    assert (r.value_at(doorways) == FREE).all()
+    assert (r.value_at(doorways) == RASTER_FREE).all()
 
 
 def test_rasterize__wall_is_as_thick_as_asked(tiny_office):
@@ -35,7 +42,7 @@ def test_rasterize__wall_is_as_thick_as_asked(tiny_office):
         r = rasterize(tiny_office, resolution_m=0.05, wall_thickness_m=thickness)
         row, col = r.world_to_cell((4.0, 2.0))
         column = r.grid[:, col]
-        assert np.count_nonzero(column[row - 10 : row + 10] == WALL) == rows
+        assert np.count_nonzero(column[row - 10 : row + 10] == RASTER_WALL) == rows
 
 
 @pytest.mark.parametrize("thickness", [0.0, 0.1])
@@ -43,7 +50,7 @@ def test_rasterize__wall_is_as_thick_as_asked(tiny_office):
 def test_rasterize__walls_do_not_leak_even_diagonally(angle_deg, thickness):
     b = _closed(rotated(corridor_office(3, 1), math.radians(angle_deg), (0.37, -1.1)))
     r = rasterize(b, resolution_m=0.1, wall_thickness_m=thickness)
-    labels, n = ndimage.label(r.grid == FREE, structure=np.ones((3, 3)))
+    labels, n = ndimage.label(r.grid == RASTER_FREE, structure=np.ones((3, 3)))
     assert n == len(b.rooms)
     for room in b.rooms:
         centre = room.polygon.representative_point()
@@ -55,7 +62,7 @@ def test_rasterize__walls_do_not_leak_even_diagonally(angle_deg, thickness):
 def test_rasterize__free_area_matches_the_floor_area(office):
     r = rasterize(office, resolution_m=0.05, wall_thickness_m=0.1)
     wall_length = float(np.linalg.norm(office.walls[:, 1] - office.walls[:, 0], axis=1).sum())
-    inside = r.area_m2(FREE) + r.area_m2(WALL)
+    inside = r.area_m2(RASTER_FREE) + r.area_m2(RASTER_WALL)
     assert inside == pytest.approx(office.area + wall_length * 0.05, rel=0.02)
 
 
@@ -64,7 +71,7 @@ def test_rasterize__grid_covers_the_building_with_a_margin(office):
     xmin, xmax, ymin, ymax = r.extent
     bx0, by0, bx1, by1 = office.bounds
     assert xmin <= bx0 - 1.0 and ymin <= by0 - 1.0 and xmax >= bx1 + 1.0 and ymax >= by1 + 1.0
-    assert (r.grid[0] == OUTSIDE).all() and (r.grid[:, -1] == OUTSIDE).all()
+    assert (r.grid[0] == RASTER_OUTSIDE).all() and (r.grid[:, -1] == RASTER_OUTSIDE).all()
     assert not r.grid.flags.writeable
 
 

@@ -8,7 +8,7 @@ from shapely.ops import unary_union
 from sim_buildings import corridor_office, rotated
 
 from realistic_indoor.building.walls import door_gap
-from realistic_indoor.sim.raster import FREE, OUTSIDE, WALL, rasterize
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, rasterize
 from realistic_indoor.sim.raycast import Raycaster
 
 RES, THICKNESS, MAX_RANGE = 0.05, 0.1, 10.0
@@ -36,7 +36,7 @@ class Reference:
 
 
 def _free_poses(raster, reference, rng, n, clearance=0.2):
-    free = np.argwhere(raster.grid == FREE)
+    free = np.argwhere(raster.grid == RASTER_FREE)
     out = []
     while len(out) < n:
         p = raster.cell_to_world(*free[rng.integers(len(free))])
@@ -80,10 +80,10 @@ def test_raycaster__agrees_with_exact_geometry_within_one_cell(name, rng, reques
             point = Point(origin + r * d)
             # never through a wall: the beam stops before crossing a wall's centre line
             assert r <= ref.first(origin, end, ref.centre_lines) + 1e-6
-            if kind == WALL:
+            if kind == RASTER_WALL:
                 n_wall += 1
                 assert ref.walls.distance(point) <= RES  # it stopped at a real wall
-            elif kind == OUTSIDE:
+            elif kind == RASTER_OUTSIDE:
                 assert ref.outside.distance(point) <= RES  # it left through an entrance
             else:
                 assert r == pytest.approx(MAX_RANGE)
@@ -96,25 +96,25 @@ def test_raycaster__ranges_are_exact_for_head_on_walls(tiny_office):
     hits = rc.cast((2.0, 4.0), np.array([0.0, math.pi / 2, math.pi, -math.pi / 2]), MAX_RANGE)
     # walls are 0.1 m thick, centred on the room outline (x = 0 and 5, y = 2 and 6)
     assert hits.range_m == pytest.approx([2.95, 1.95, 1.95, 1.95], abs=1e-4)
-    assert (hits.kind == WALL).all()
+    assert (hits.kind == RASTER_WALL).all()
 
 
 def test_raycaster__beam_through_an_entrance_reports_the_outside(tiny_office):
     rc = Raycaster(rasterize(tiny_office, RES, THICKNESS))
     hits = rc.cast((3.0, 1.0), np.array([math.pi]), MAX_RANGE)  # west, through the entrance e1
-    assert hits.kind[0] == OUTSIDE
+    assert hits.kind[0] == RASTER_OUTSIDE
     assert hits.range_m[0] == pytest.approx(3.0, abs=RES)
 
 
 def test_raycaster__nothing_within_range_reads_max_range(office):
     rc = Raycaster(rasterize(office))
     hits = rc.cast((3.0, 6.25), np.array([0.0]), 2.0)  # along the corridor
-    assert hits.kind[0] == FREE and hits.range_m[0] == pytest.approx(2.0)
+    assert hits.kind[0] == RASTER_FREE and hits.range_m[0] == pytest.approx(2.0)
 
 
 def test_raycaster__origin_off_the_grid_sees_outside(tiny_office):
     hits = Raycaster(rasterize(tiny_office)).cast((-100.0, 0.0), np.zeros(3), MAX_RANGE)
-    assert (hits.kind == OUTSIDE).all() and (hits.range_m == 0).all()
+    assert (hits.kind == RASTER_OUTSIDE).all() and (hits.range_m == 0).all()
 
 
 def test_raycaster__line_of_sight_is_blocked_by_walls_not_by_doorways(tiny_office):
@@ -137,5 +137,5 @@ def test_free_distance_cells__is_the_exact_euclidean_distance_transform(office, 
     from realistic_indoor.sim.raycast import free_distance_cells
 
     raster = rasterize(office)
-    expected = distance_transform_edt(raster.grid == FREE)
+    expected = distance_transform_edt(raster.grid == RASTER_FREE)
     assert np.abs(free_distance_cells(raster) - expected).max() < 1e-4

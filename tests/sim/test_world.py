@@ -7,7 +7,7 @@ from sim_buildings import corridor_office
 
 from realistic_indoor.building import Building, Room
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.raster import FREE
+from realistic_indoor.sim.raster import RASTER_FREE
 from realistic_indoor.sim.world import World, WorldConfig
 
 
@@ -44,7 +44,7 @@ def test_world__without_hall_starts_in_the_largest_room():
 
 def test_world__reachable_floor_is_the_free_floor_joined_to_the_start(tiny_office):
     w = World(tiny_office)
-    assert w.reachable.sum() == (w.raster.grid == FREE).sum()
+    assert w.reachable.sum() == (w.raster.grid == RASTER_FREE).sum()
     cut_off = Building("office", tiny_office.rooms, tiny_office.doors[:1] + tiny_office.doors[2:])
     w2 = World(cut_off)
     assert w2.reachable_area_m2 == pytest.approx(w.reachable_area_m2 - 20.0, abs=1.0)

@@ -15,7 +15,7 @@ from realistic_indoor.io import save
 from realistic_indoor.io.world3d import WorldOptions, building_boxes
 from realistic_indoor.sim import World, WorldConfig
 from realistic_indoor.sim.lidar import Lidar, LidarConfig
-from realistic_indoor.sim.raster import WALL
+from realistic_indoor.sim.raster import RASTER_WALL
 
 mujoco = pytest.importorskip("mujoco", reason="MuJoCo is in the sim3d extra: pip install -e '.[sim3d]'")
 
@@ -66,7 +66,7 @@ def _compare(building, model, data, world: World) -> tuple[list[float], list[tup
         scan = lidar.scan(world.raycaster, (x, y, 0.0))
         for angle, laser, kind in zip(lidar.offsets_rad, scan.true.range_m, scan.true.kind, strict=True):
             seen = _mujoco_range(model, data, x, y, angle)
-            if kind == WALL:
+            if kind == RASTER_WALL:
                 errors.append(abs(seen - laser))
                 if errors[-1] > TOLERANCE_M:
                     wrong.append((x, y, angle, float(laser), seen))

@@ -52,3 +52,10 @@ def test_repository__gitignore_ignores_venv_folder_and_link(tmp_path):
     for name in (".venv", ".venv/pyvenv.cfg", "runs/x.json"):
         out = subprocess.run(["git", "check-ignore", "--no-index", "-q", name], cwd=ROOT, capture_output=True)
         assert out.returncode == 0, f"{name} is not ignored"
+
+
+def test_version__matches_pyproject():
+    from realistic_indoor.version import __version__
+
+    declared = re.search(r'^version = "([^"]+)"', (ROOT / "pyproject.toml").read_text(), re.MULTILINE)
+    assert declared is not None and __version__ == declared.group(1)

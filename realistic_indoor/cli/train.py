@@ -238,7 +238,7 @@ def _train(args: argparse.Namespace, config, model_path: Path) -> None:
 
 
 def _evaluate(args: argparse.Namespace, model_path: Path, eval_ids, plan, eval_dir: Path) -> None:
-    from realistic_indoor.agents.rl.compare import evaluate_ppo, format_evaluation
+    from realistic_indoor.evaluation.ppo import evaluate_ppo, format_evaluation
 
     agents = ", ".join(("ppo", *plan.baselines))
     print(

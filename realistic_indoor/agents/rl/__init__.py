@@ -1,7 +1,7 @@
-"""Reinforcement learning: PPO training on a mix of building types, its evaluation, the trained agent.
+"""Reinforcement learning: PPO training on a mix of building types and the trained agent.
 
 ``realistic-indoor train`` (and ``experiments/train_ppo.py``) run :func:`train_ppo` then
-:func:`evaluate_ppo` with a preset of :data:`PPO_PRESETS` and :data:`PPO_EVAL_PRESETS`.
+:func:`realistic_indoor.evaluation.ppo.evaluate_ppo` with a preset of :data:`PPO_PRESETS` and :data:`PPO_EVAL_PRESETS`.
 stable-baselines3 and torch are imported only when a model is trained or loaded
 (``pip install "realistic-indoor[rl]"``).
 """
@@ -25,7 +25,6 @@ __all__ = [
     "PPOConfig",
     "TrainResult",
     "env_ids_of",
-    "evaluate_ppo",
     "load_model",
     "ppo_preset",
     "train_ppo",
@@ -40,7 +39,6 @@ def __getattr__(name: str):
         "load_model": "agent",
         "TrainResult": "train",
         "train_ppo": "train",
-        "evaluate_ppo": "compare",
     }
     if name in where:
         return getattr(importlib.import_module(f"realistic_indoor.agents.rl.{where[name]}"), name)

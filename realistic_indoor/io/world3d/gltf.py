@@ -108,7 +108,7 @@ class _Builder:
 
 def glb_bytes(building: Building, options: WorldOptions) -> bytes:
     """The ``.glb`` file's bytes: a 12-byte header, the JSON chunk, the binary chunk."""
-    from realistic_indoor import __version__
+    from realistic_indoor.version import __version__
 
     b = _Builder()
     root = b.node({"name": "building", "rotation": list(Z_UP_TO_Y_UP), "children": []})

@@ -309,7 +309,7 @@ def comment_lines(building: Building, options: WorldOptions, fmt_name: str) -> l
         options: The options the file was written with.
         fmt_name: What the file is (``"Gazebo world (SDFormat 1.9)"``).
     """
-    from realistic_indoor import __version__
+    from realistic_indoor.version import __version__
 
     x0, y0, x1, y1 = building.bounds
     o = options

@@ -1,4 +1,7 @@
-"""The evaluation after a training run: the trained PPO agent against baselines, paired seeds."""
+"""The evaluation after a training run: the trained PPO agent against baselines, paired seeds.
+
+(It lives in ``evaluation/``, above ``agents/``, because it runs the evaluation runner.)
+"""
 
 from __future__ import annotations
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import re
 import shutil
 import subprocess
@@ -59,3 +60,54 @@ def test_version__matches_pyproject():
 
     declared = re.search(r'^version = "([^"]+)"', (ROOT / "pyproject.toml").read_text(), re.MULTILINE)
     assert declared is not None and __version__ == declared.group(1)
+
+
+def _skips_own_import_failure(tree: ast.AST) -> list[int]:
+    """Lines where a test skips because an import of the project's own code failed."""
+    lines = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and getattr(node.func, "attr", "") == "importorskip":
+            first = node.args[0] if node.args else None
+            if isinstance(first, ast.Constant) and str(first.value).startswith("realistic_indoor"):
+                lines.append(node.lineno)
+        if isinstance(node, ast.Try):
+            imports_own = any(
+                isinstance(n, (ast.Import, ast.ImportFrom))
+                and any(
+                    (getattr(n, "module", None) or a.name).startswith("realistic_indoor") for a in n.names
+                )
+                for stmt in node.body
+                for n in ast.walk(stmt)
+            )
+            skips = any(
+                isinstance(n, ast.Call) and getattr(n.func, "attr", "") == "skip"
+                for h in node.handlers
+                for stmt in h.body
+                for n in ast.walk(stmt)
+            )
+            if imports_own and skips:
+                lines.append(node.lineno)
+    return lines
+
+
+def test_tests__never_skip_when_the_projects_own_code_fails_to_import():
+    """A broken module of the package must show as an error, not as skipped tests."""
+    found = [
+        f"{path.relative_to(ROOT)}:{line}"
+        for path in sorted((ROOT / "tests").rglob("*.py"))
+        for line in _skips_own_import_failure(ast.parse(path.read_text()))
+    ]
+    assert found == []
+
+
+def test_skip_check__finds_both_forms():
+    source = (
+        "import pytest\n"
+        "gen = pytest.importorskip('realistic_indoor.generator')\n"
+        "try:\n"
+        "    from realistic_indoor.sim import World\n"
+        "except ImportError:\n"
+        "    pytest.skip('no sim')\n"
+        "mj = pytest.importorskip('mujoco')\n"
+    )
+    assert sorted(_skips_own_import_failure(ast.parse(source))) == [2, 3]

@@ -125,10 +125,9 @@ def _safety_run(world, rng, n_steps, config):
 
 
 def _generated_office(request):
-    generator = pytest.importorskip("realistic_indoor.generator")
-    if not hasattr(generator, "generate"):
-        pytest.skip("realistic_indoor.generator.generate is not available yet")
-    return generator.generate("office", area_m2=800, seed=3)
+    from realistic_indoor.generator import generate
+
+    return generate("office", area_m2=800, seed=3)
 
 
 def _real_school(request):

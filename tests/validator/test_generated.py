@@ -4,6 +4,7 @@ cannot be imported (the generator is being written in parallel)."""
 
 import pytest
 
+from realistic_indoor.generator import generate
 from realistic_indoor.validator.compare import compare_sets
 from realistic_indoor.validator.connectivity import set_connectivity
 from realistic_indoor.validator.plan_sets import PlanSet, load_plan_set
@@ -15,17 +16,8 @@ N = 20
 AREA_M2 = 2000.0
 
 
-def _generate():
-    try:
-        from realistic_indoor.generator import generate
-    except ImportError as e:
-        pytest.skip(f"realistic_indoor.generator.generate cannot be imported yet ({e})")
-    return generate
-
-
 @pytest.fixture(scope="module")
 def generated():
-    generate = _generate()
     sets = {
         kind: PlanSet.of(kind, [generate(kind, area_m2=AREA_M2, seed=s) for s in range(N)])
         for kind in ("office", "random")

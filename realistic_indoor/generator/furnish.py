@@ -48,13 +48,15 @@ def rooms_from_regions(
     hall_rooms: bool = True,
     corridor_cuts: float | None = None,
     max_axes_ratio: float = math.inf,
+    widen_last_room: bool = False,
 ) -> Plan:
     """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions.
 
     With ``hall_rooms``, large halls get a strip of rooms along a side (see
     :func:`~realistic_indoor.generator.wings.halls.carve_hall_bays`); ``corridor_cuts``
     overrides the style's share of corridor segments to cut; rooms are at least a strip's depth
-    over ``max_axes_ratio`` wide.
+    over ``max_axes_ratio`` wide; ``widen_last_room``: see
+    :class:`~realistic_indoor.generator.wings.bays.BayContext`.
     """
     if hall_rooms:
         carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
@@ -65,7 +67,9 @@ def rooms_from_regions(
     stub = to_units(rng.uniform(1.3, 1.6))
     limit = (dims.depth + dims.shallow) // 2
     budget = building_budget(regions, model, stub, style.core_rooms, limit)
-    ctx = BayContext(model, budget, circulation, stub, style.core_rooms, limit, max_axes_ratio)
+    ctx = BayContext(
+        model, budget, circulation, stub, style.core_rooms, limit, max_axes_ratio, widen_last_room
+    )
     for k in rng.permutation(len(regions.bays)):
         subdivide(plan, regions.bays[int(k)], rng, ctx)
     for rect in regions.ends:

@@ -71,14 +71,14 @@ class _WingGenerator:
 
     def __call__(self, rng: np.random.Generator) -> Building:
         """A new building of about :attr:`area_m2` drawn with ``rng``."""
-        model = self.type_model
+        model = self.type_model.at_area(self.area_m2)
         if self.layout_name == "wings":
             plan, facts = wing_plan(rng, self.area_m2, model, self.style)
         else:
             plan, facts = block_plan(rng, self.area_m2, model, self.style, self.blocks)
         custom = isinstance(self.model, BuildingTypeModel)
         btype = model.building_type.value if custom else self.name
-        params = {"area_m2": self.area_m2, **model_params(model, real_model(self.name))}
+        params = {"area_m2": self.area_m2, **model_params(self.type_model, real_model(self.name))}
         if self.layout is not None:
             params["layout"] = self.layout
         return finish(plan, rng, btype, {"generator": self.name, "params": params, **facts})

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cache, lru_cache
 from importlib import resources
 from typing import TYPE_CHECKING, Any
@@ -22,6 +22,7 @@ __all__ = [
     "BuildingTypeModel",
     "LabelStats",
     "LocalStructures",
+    "SizeScaling",
     "default_model",
     "real_model",
 ]
@@ -76,6 +77,42 @@ class LocalStructures:
 
 
 @dataclass(frozen=True)
+class SizeScaling:
+    """How room sizes grow with the building's floor area.
+
+    Real buildings of one type do not keep their rooms' sizes as they grow: in the shared real
+    schools every label's mean area grows about as the square root of the floor area (larger
+    schools have larger classrooms, halls and gyms), so rooms per hectare fall. A model with a
+    scaling multiplies every label's mean and standard deviation of area by
+    ``(area_m2 / reference_area_m2) ** exponent``, clipped to ``[low, high]``.
+
+    Attributes:
+        exponent: Growth of room areas with floor area (log-log slope); 0 for none.
+        reference_area_m2: Floor area at which the label statistics hold unscaled (m2).
+        low: Smallest factor applied.
+        high: Largest factor applied.
+    """
+
+    exponent: float = 0.0
+    reference_area_m2: float = 1000.0
+    low: float = 0.5
+    high: float = 2.0
+
+    def factor(self, area_m2: float) -> float:
+        """The factor on room areas for a building of ``area_m2`` (1 without scaling).
+
+        Examples:
+            >>> SizeScaling(0.5, 1000.0).factor(4000.0)
+            2.0
+            >>> SizeScaling(0.5, 1000.0).factor(100.0)
+            0.5
+        """
+        if self.exponent == 0.0:
+            return 1.0
+        return float(min(max((area_m2 / self.reference_area_m2) ** self.exponent, self.low), self.high))
+
+
+@dataclass(frozen=True)
 class BuildingTypeModel:
     """Statistics of one building type, from the paper's tables or fitted to real plans.
 
@@ -87,6 +124,8 @@ class BuildingTypeModel:
         functions: Per semantic label, the relative frequency of each functional label.
         structures: Frequencies of the recurring local structures.
         source: Where the numbers come from, in words.
+        size_scaling: How room areas grow with the floor area (:meth:`at_area`); none for the
+            paper's tables, which give one mean per label.
     """
 
     name: str
@@ -95,6 +134,7 @@ class BuildingTypeModel:
     functions: Mapping[SemanticLabel, Mapping[str, float]]
     structures: LocalStructures = field(default_factory=LocalStructures)
     source: str = ""
+    size_scaling: SizeScaling = field(default_factory=SizeScaling)
 
     def __post_init__(self) -> None:
         missing = [lab.value for lab in SemanticLabel if lab not in self.labels]
@@ -123,6 +163,20 @@ class BuildingTypeModel:
     def mean_room_area(self) -> float:
         """Expected floor area per room over all labels, m2 (total area / number of rooms)."""
         return sum(p * self.labels[lab].area_mean for lab, p in self.shares().items())
+
+    def at_area(self, area_m2: float) -> BuildingTypeModel:
+        """The model for a building of ``area_m2``: room areas scaled by :attr:`size_scaling`.
+
+        Returns the model itself when the factor is 1 (no scaling, or the reference area).
+        """
+        f = self.size_scaling.factor(area_m2)
+        if f == 1.0:
+            return self
+        labels = {
+            lab: replace(s, area_mean=s.area_mean * f, area_std=s.area_std * f)
+            for lab, s in self.labels.items()
+        }
+        return replace(self, labels=labels)
 
     def connection(self, label: SemanticLabel, target: str) -> float:
         """Fraction of the doorways of ``label`` rooms that lead to ``target`` (a label value or ``outside``)."""
@@ -157,6 +211,7 @@ class BuildingTypeModel:
             "connections": {lab.value: dict(c) for lab, c in self.connections.items()},
             "functions": {lab.value: dict(f) for lab, f in self.functions.items()},
             "structures": vars(self.structures).copy(),
+            "size_scaling": vars(self.size_scaling).copy(),
         }
 
     @classmethod
@@ -175,6 +230,7 @@ class BuildingTypeModel:
                 functions={parse_label(k): dict(v) for k, v in data.get("functions", {}).items()},
                 structures=LocalStructures(**data.get("structures", {})),
                 source=str(data.get("source", "")),
+                size_scaling=SizeScaling(**data.get("size_scaling", {})),
             )
         except KeyError as e:
             raise ConfigError(

@@ -15,7 +15,7 @@ from realistic_indoor.building.labels import (
     normalise_function,
 )
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.models.building_model import BuildingTypeModel, LabelStats, LocalStructures
+from realistic_indoor.models.building_model import BuildingTypeModel, LabelStats, LocalStructures, SizeScaling
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -72,6 +72,7 @@ def fit_model(
         connections=_connections(plans),
         functions=_functions(plans),
         structures=_structures(plans),
+        size_scaling=_size_scaling(scaled),
         source=f"fitted to {len(plans)} plans ({len(scaled)} with plausible scales)",
     )
 
@@ -107,6 +108,34 @@ def _label_stats(plans: list[Building], scaled: list[Building]) -> dict[Semantic
         ratio = _mean_std([min(r.axes_ratio, 50.0) for _, r in rows])
         out[lab] = LabelStats(counts[lab] / total, *area, *doors, *ratio)
     return out
+
+
+def _size_scaling(plans: list[Building]) -> SizeScaling:
+    """How each label's mean room area grows with the plan's floor area (log-log slope).
+
+    One point per plan and label, ``(log floor area, log(the plan's mean area of the label /
+    the label's mean over all plans))``, weighted by the plan's rooms of that label; the slope
+    of the weighted least-squares line is the exponent, and the room-weighted mean log floor
+    area the reference (where the pooled label means hold). Fewer than three plans, or plans all
+    of one size, give no scaling.
+    """
+    points = []
+    for lab in SemanticLabel:
+        pooled = [r.area for b in plans for r in b.rooms if r.label is lab]
+        if not pooled:
+            continue
+        mean = float(np.mean(pooled))
+        for b in plans:
+            areas = [r.area for r in b.rooms if r.label is lab]
+            if areas and b.area > 0:
+                points.append((np.log(b.area), np.log(np.mean(areas) / mean), len(areas)))
+    if len({b.area for b in plans}) < 3 or not points:
+        return SizeScaling()
+    x, y, w = (np.array(v, dtype=float) for v in zip(*points, strict=True))
+    x_ref = float(np.average(x, weights=w))
+    dx = x - x_ref
+    slope = float(np.sum(w * dx * (y - np.average(y, weights=w))) / np.sum(w * dx * dx))
+    return SizeScaling(exponent=round(slope, 4), reference_area_m2=round(float(np.exp(x_ref)), 1))
 
 
 def _target(b: Building, rid: str, door) -> str:

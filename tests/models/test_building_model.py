@@ -6,7 +6,7 @@ import pytest
 
 from realistic_indoor.building import SemanticLabel
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.models import BuildingTypeModel, default_model, reference_table
+from realistic_indoor.models import BuildingTypeModel, default_model, real_model, reference_table
 
 
 @pytest.mark.parametrize("kind", ["office", "school", "house"])
@@ -63,3 +63,15 @@ def test_label_stats__areas_follow_the_mean_and_spread():
     assert draws.mean() == pytest.approx(stats.area_mean, rel=0.05)
     assert draws.std() == pytest.approx(stats.area_std, rel=0.15)
     assert (draws > 0).all()
+
+
+def test_paper_model__has_no_size_scaling():
+    """Table 1 gives one mean area per label: the paper's model keeps it at every size."""
+    model = default_model("school")
+    assert model.at_area(300.0) is model and model.at_area(30000.0) is model
+
+
+def test_real_school_model__grows_its_rooms_with_the_floor_area():
+    model = real_model("school")
+    small, large = model.at_area(800.0), model.at_area(8000.0)
+    assert small.stats("medium").area_mean < model.stats("medium").area_mean < large.stats("medium").area_mean

@@ -3,7 +3,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from realistic_indoor.building import ROOM_LABELS, SemanticLabel, check_building
+from realistic_indoor.building import ROOM_LABELS, Building, Door, Room, SemanticLabel, check_building
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator import generate, make_generator
 from realistic_indoor.models import BuildingTypeModel, fit_model
@@ -81,3 +81,58 @@ def test_fit_model__on_the_real_plans_gives_a_generator_of_their_statistics(kind
         assert table[lab]["share_pct"] == pytest.approx(100 * model.labels[lab].share, abs=8.0), lab
     for lab in ROOM_LABELS:
         assert table[lab]["doors_mean"] == pytest.approx(model.labels[lab].doors_mean, abs=0.3), lab
+
+
+def _row_of_rooms(side_m: float, n: int) -> Building:
+    """``n`` square rooms of ``side_m`` in a row along a corridor, one door each."""
+    rooms = [Room.rectangle("c", "corridor", "corridor", (0.0, 0.0, n * side_m, 2.0))]
+    doors = [Door("e", "c", None, 0.0, 1.0, 1.0, np.pi / 2)]
+    for k in range(n):
+        rooms.append(
+            Room.rectangle(f"r{k}", "medium", "classroom", (k * side_m, 2.0, (k + 1) * side_m, 2.0 + side_m))
+        )
+        doors.append(Door(f"d{k}", "c", f"r{k}", (k + 0.5) * side_m, 2.0, 0.9, 0.0))
+    return Building("school", tuple(rooms), tuple(doors), {})
+
+
+def test_fit_model__room_areas_growing_with_floor_area_give_the_exponent():
+    # rooms of sides 6, 8, 10 m (4, 8, 16 of them) off a 2 m corridor: floor areas 192, 640 and
+    # 1,920 m2, medium rooms 36, 64, 100 m2, corridors 48, 128, 320 m2. The exponent is the
+    # weighted least-squares slope of log(area / the label's mean) on log(floor area), one
+    # point per plan and label weighted by its rooms; computed here with numpy's polyfit.
+    plans = [_row_of_rooms(side, n) for side, n in ((6.0, 4), (8.0, 8), (10.0, 16))]
+    assert [b.area for b in plans] == [192.0, 640.0, 1920.0]
+    x = np.log([192.0, 640.0, 1920.0] * 2)
+    medium_mean, corridor_mean = (4 * 36 + 8 * 64 + 16 * 100) / 28, (48 + 128 + 320) / 3
+    y = np.log(
+        [
+            36 / medium_mean,
+            64 / medium_mean,
+            100 / medium_mean,
+            48 / corridor_mean,
+            128 / corridor_mean,
+            320 / corridor_mean,
+        ]
+    )
+    w = np.array([4, 8, 16, 1, 1, 1])
+    expected = np.polyfit(x, y, 1, w=np.sqrt(w))[0]
+    scaling = fit_model(plans, skip_misscaled=False).size_scaling
+    assert scaling.exponent == pytest.approx(expected, abs=1e-4)
+    assert scaling.reference_area_m2 == pytest.approx(np.exp(np.average(x, weights=w)), abs=0.1)
+
+
+def test_fit_model__plans_of_one_size_give_no_scaling():
+    plans = [_row_of_rooms(6.0, 4) for _ in range(3)]
+    assert fit_model(plans, skip_misscaled=False).size_scaling.exponent == 0.0
+
+
+def test_at_area__scales_every_label_area_by_the_factor():
+    model = fit_model(
+        [_row_of_rooms(s, n) for s, n in ((6.0, 4), (8.0, 8), (10.0, 16))], skip_misscaled=False
+    )
+    ref = model.size_scaling.reference_area_m2
+    bigger = model.at_area(ref * 4)
+    factor = min(4**model.size_scaling.exponent, 2.0)
+    for lab in SemanticLabel:
+        assert bigger.stats(lab).area_mean == pytest.approx(model.stats(lab).area_mean * factor)
+    assert model.at_area(ref) is model

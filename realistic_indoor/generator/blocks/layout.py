@@ -105,6 +105,7 @@ def _lay_out(
         hall_rooms=False,
         corridor_cuts=blocks.corridor_cuts,
         max_axes_ratio=blocks.max_axes_ratio,
+        widen_last_room=True,
     )
     lobby = exterior_walls(plan, 0) if plan.rooms and plan.rooms[0].label is H else []
     if annex_m2 and add_annex(plan, rng, style, annex_m2, label=B, keep_clear=lobby) < 0:

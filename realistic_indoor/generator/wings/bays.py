@@ -86,6 +86,9 @@ class BayContext:
         max_axes_ratio: Rooms other than small ones are at least the bay's depth over this
             and at most the depth times this wide (a deep bay gets larger rooms rather than
             long narrow ones, a shallow one smaller rooms); unbounded by default.
+        widen_last_room: Give the end of a deep bay too short for a room of its own to the
+            room before it (within ``max_axes_ratio``) instead of making it a small room: real
+            strips end in a wider room, not in a sliver.
     """
 
     model: BuildingTypeModel
@@ -95,6 +98,7 @@ class BayContext:
     core_rows: tuple[int, int]
     shallow: int
     max_axes_ratio: float = math.inf
+    widen_last_room: bool = False
 
 
 @dataclass
@@ -195,6 +199,8 @@ def _plan_units(bay: Bay, rng: np.random.Generator, ctx: BayContext) -> list[Uni
         last = unit.t1 > length - MIN_ROOM
         if last and (length - t < _min_width(unit) or length - t < 0.6 * unit.width):
             unit = _filler(ctx, t, length, depth, shallow)
+            if _widen_previous(units, unit, ctx, depth, shallow):
+                break
         ctx.budget.take(unit.kind)
         units.append(unit)
         if last:
@@ -205,6 +211,18 @@ def _plan_units(bay: Bay, rng: np.random.Generator, ctx: BayContext) -> list[Uni
         units.append(Unit("S" if label is S else "M", 0, length, label))
     units[-1].t1 = length
     return units
+
+
+def _widen_previous(units: list[Unit], filler: Unit, ctx: BayContext, depth: int, shallow: bool) -> bool:
+    """Stretch the last plain room over a small ``filler`` if the style asks and the room allows."""
+    if not ctx.widen_last_room or shallow or filler.label is not S or not units:
+        return False
+    prev = units[-1]
+    if prev.kind not in ("M", "B") or filler.t1 - prev.t0 > depth * ctx.max_axes_ratio:
+        return False
+    prev.t1 = filler.t1
+    prev.label = label_for_area(ctx.model, prev.width * depth)
+    return True
 
 
 def _filler(ctx: BayContext, t0: int, t1: int, depth: int, shallow: bool) -> Unit:

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from realistic_indoor.generator.plan import Plan
     from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["break_mazes", "connect_circulation", "connect_rooms", "ensure_reachable"]
+__all__ = ["break_mazes", "connect_circulation", "connect_rooms", "door_habit_scale", "ensure_reachable"]
 
 
 def connect_circulation(plan: Plan, only: set[int] | None = None) -> None:
@@ -53,6 +53,7 @@ def connect_rooms(
     pairs: float,
     only: set[int] | None = None,
     per_room: int = 1,
+    scale: float = 1.0,
 ) -> None:
     """Doors of every room that is not a corridor or hall.
 
@@ -65,6 +66,8 @@ def connect_rooms(
         per_room: Most second doors one room may get while bringing its label's mean door
             count to the model's: 1 spreads them over many rooms, more gathers them in fewer
             (real plans have most rooms with one door and a few with several).
+        scale: Factor on each label's further doors per room: the building's habit (see
+            :func:`door_habit_scale`).
     """
     chosen = set(range(len(plan.rooms))) if only is None else only
     neighbours = plan.neighbours()
@@ -77,7 +80,7 @@ def connect_rooms(
             continue
         _primary_door(plan, i, options[i], p_hall[room.label], rng)
     _connecting_doors(plan, neighbours, rng, pairs, chosen)
-    _extra_doors(plan, neighbours, model, rng, chosen, per_room)
+    _extra_doors(plan, neighbours, model, rng, chosen, per_room, scale)
 
 
 def _circulation_options(plan: Plan, i: int, near: list[int]) -> dict[SemanticLabel, list[int]]:
@@ -151,6 +154,21 @@ def _connecting_doors(
                 break
 
 
+def door_habit_scale(model: BuildingTypeModel, rng: np.random.Generator) -> float:
+    """One building's factor on further doors per room, drawn from the model's door habits.
+
+    1 (and nothing drawn) for a model without habits; else the drawn rate of further doors per
+    ordinary room over the model's pooled rate.
+    """
+    if model.door_habits.mean_rate <= 0:
+        return 1.0
+    rate = model.door_habits.draw(rng)
+    shares = model.shares()
+    pooled = sum(shares[lab] * max(model.stats(lab).doors_mean - 1.0, 0.0) for lab in ROOM_LABELS)
+    pooled /= max(sum(shares[lab] for lab in ROOM_LABELS), 1e-9)
+    return rate / pooled if pooled > 0 else 0.0
+
+
 def _extra_doors(
     plan: Plan,
     neighbours: list[list[int]],
@@ -158,15 +176,22 @@ def _extra_doors(
     rng: np.random.Generator,
     chosen: set[int],
     per_room: int = 1,
+    scale: float = 1.0,
 ) -> None:
-    """Further doors (to circulation or outside) until each label's mean door count is the model's."""
+    """Further doors (to circulation or outside) until each label's mean door count is the model's.
+
+    ``scale`` multiplies each label's further doors per room (the building's habit, see
+    :class:`~realistic_indoor.models.building_model.DoorHabits`).
+    """
     counts = plan.door_count()
     for label in ROOM_LABELS:
         rooms = [i for i, r in enumerate(plan.rooms) if r.label is label and r.role == "room" and i in chosen]
         if not rooms:
             continue
         everyone = [i for i, r in enumerate(plan.rooms) if r.label is label and i in chosen]
-        deficit = model.stats(label).doors_mean * len(everyone) - sum(counts[i] for i in everyone)
+        mean = model.stats(label).doors_mean
+        wanted = mean if scale == 1.0 else 1.0 + scale * (mean - 1.0)
+        deficit = wanted * len(everyone) - sum(counts[i] for i in everyone)
         rooms.sort(key=lambda i: -plan.rooms[i].area - rng.random())
         p_out = model.connection(label, OUTSIDE)
         for i in rooms:

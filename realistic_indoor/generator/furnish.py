@@ -123,6 +123,7 @@ def connect_and_name(
     core_on_facade: bool = False,
     doors_per_room: int = 1,
     pairs: float | None = None,
+    door_scale: float = 1.0,
 ) -> None:
     """Doors (circulation, entrances, rooms, reachability, no mazes), then functions.
 
@@ -130,12 +131,13 @@ def connect_and_name(
     outside wall (see :class:`~realistic_indoor.generator.functions.FunctionRoles`);
     ``doors_per_room`` is the most further doors one room gets and ``pairs`` the share of
     medium and big rooms given a connecting door to a neighbour (default: the model's), see
-    :func:`~realistic_indoor.generator.connect.connect_rooms`.
+    :func:`~realistic_indoor.generator.connect.connect_rooms`; ``door_scale`` is the building's
+    door habit (:func:`~realistic_indoor.generator.connect.door_habit_scale`).
     """
     connect_circulation(plan)
     _entrances(plan, rng, _lobby(plan), style, model)
     share = model.structures.connected_room_pairs if pairs is None else pairs
-    connect_rooms(plan, model, rng, share, per_room=doors_per_room)
+    connect_rooms(plan, model, rng, share, per_room=doors_per_room, scale=door_scale)
     ensure_reachable(plan, rng)
     break_mazes(plan, rng)
     roles = FunctionRoles(

@@ -20,6 +20,7 @@ if TYPE_CHECKING:
 __all__ = [
     "REAL_MODEL_TYPES",
     "BuildingTypeModel",
+    "DoorHabits",
     "LabelStats",
     "LocalStructures",
     "SizeScaling",
@@ -77,6 +78,33 @@ class LocalStructures:
 
 
 @dataclass(frozen=True)
+class DoorHabits:
+    """How many doors beyond the first the ordinary rooms of one building have, building by building.
+
+    Buildings of one type differ in this more than in anything else the real plans show: a
+    third of the shared real schools give every room one door, others connect neighbouring
+    classrooms and stores throughout. A pooled mean door count gives every generated building
+    the same middling habit; a model with habits draws each building's own rate: none with
+    probability :attr:`none_share`, else exponentially distributed with mean :attr:`mean_rate`.
+
+    Attributes:
+        none_share: Share of buildings whose ordinary rooms (small, medium, big) have one door
+            each (under 0.05 further doors per room).
+        mean_rate: Mean further doors per ordinary room over the other buildings; 0 for no
+            habits (the pooled per-label door counts alone).
+    """
+
+    none_share: float = 0.0
+    mean_rate: float = 0.0
+
+    def draw(self, rng: np.random.Generator) -> float:
+        """One building's further doors per ordinary room (at most 2)."""
+        if rng.random() < self.none_share:
+            return 0.0
+        return float(min(rng.exponential(self.mean_rate), 2.0))
+
+
+@dataclass(frozen=True)
 class SizeScaling:
     """How room sizes grow with the building's floor area.
 
@@ -126,6 +154,8 @@ class BuildingTypeModel:
         source: Where the numbers come from, in words.
         size_scaling: How room areas grow with the floor area (:meth:`at_area`); none for the
             paper's tables, which give one mean per label.
+        door_habits: How buildings differ in further doors per room; none for the paper's
+            tables (every building then follows the pooled per-label door counts).
     """
 
     name: str
@@ -135,6 +165,7 @@ class BuildingTypeModel:
     structures: LocalStructures = field(default_factory=LocalStructures)
     source: str = ""
     size_scaling: SizeScaling = field(default_factory=SizeScaling)
+    door_habits: DoorHabits = field(default_factory=DoorHabits)
 
     def __post_init__(self) -> None:
         missing = [lab.value for lab in SemanticLabel if lab not in self.labels]
@@ -212,6 +243,7 @@ class BuildingTypeModel:
             "functions": {lab.value: dict(f) for lab, f in self.functions.items()},
             "structures": vars(self.structures).copy(),
             "size_scaling": vars(self.size_scaling).copy(),
+            "door_habits": vars(self.door_habits).copy(),
         }
 
     @classmethod
@@ -231,6 +263,7 @@ class BuildingTypeModel:
                 structures=LocalStructures(**data.get("structures", {})),
                 source=str(data.get("source", "")),
                 size_scaling=SizeScaling(**data.get("size_scaling", {})),
+                door_habits=DoorHabits(**data.get("door_habits", {})),
             )
         except KeyError as e:
             raise ConfigError(

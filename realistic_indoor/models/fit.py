@@ -15,7 +15,13 @@ from realistic_indoor.building.labels import (
     normalise_function,
 )
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.models.building_model import BuildingTypeModel, LabelStats, LocalStructures, SizeScaling
+from realistic_indoor.models.building_model import (
+    BuildingTypeModel,
+    DoorHabits,
+    LabelStats,
+    LocalStructures,
+    SizeScaling,
+)
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -73,6 +79,7 @@ def fit_model(
         functions=_functions(plans),
         structures=_structures(plans),
         size_scaling=_size_scaling(scaled),
+        door_habits=_door_habits(plans),
         source=f"fitted to {len(plans)} plans ({len(scaled)} with plausible scales)",
     )
 
@@ -136,6 +143,28 @@ def _size_scaling(plans: list[Building]) -> SizeScaling:
     dx = x - x_ref
     slope = float(np.sum(w * dx * (y - np.average(y, weights=w))) / np.sum(w * dx * dx))
     return SizeScaling(exponent=round(slope, 4), reference_area_m2=round(float(np.exp(x_ref)), 1))
+
+
+NO_FURTHER_DOORS = 0.05
+"""Further doors per ordinary room under which a plan counts as giving every room one door."""
+
+
+def _door_habits(plans: list[Building]) -> DoorHabits:
+    """Share of plans whose ordinary rooms have one door each, and the others' mean further doors.
+
+    Plans with fewer than three ordinary rooms say little about habits and are left out; fewer
+    than three plans left give no habits.
+    """
+    rates = []
+    for b in plans:
+        doors = [len(b.doors_of[r.id]) for r in b.rooms if r.label in ROOM_LABELS]
+        if len(doors) >= 3:
+            rates.append(float(np.mean(doors)) - 1.0)
+    if len(rates) < 3:
+        return DoorHabits()
+    some = [r for r in rates if r >= NO_FURTHER_DOORS]
+    none_share = 1.0 - len(some) / len(rates)
+    return DoorHabits(round(none_share, 4), round(float(np.mean(some)), 4) if some else 0.0)
 
 
 def _target(b: Building, rid: str, door) -> str:

@@ -136,3 +136,27 @@ def test_at_area__scales_every_label_area_by_the_factor():
     for lab in SemanticLabel:
         assert bigger.stats(lab).area_mean == pytest.approx(model.stats(lab).area_mean * factor)
     assert model.at_area(ref) is model
+
+
+def test_fit_model__door_habits_count_plans_with_one_door_per_room():
+    # two plans whose rooms have one door each (none_share 2/3), and one of 8 rooms with a
+    # corridor door each plus 4 doors joining rooms 0-1, 2-3, 4-5, 6-7: 16 room-doors for 8
+    # rooms, one further door per room (mean_rate 1)
+    plain = [_row_of_rooms(6.0, 4), _row_of_rooms(8.0, 4)]
+    busy = _row_of_rooms(6.0, 8)
+    extra = tuple(
+        Door(f"x{k}", f"r{k}", f"r{k + 1}", (k + 1) * 6.0, 5.0, 0.9, np.pi / 2) for k in range(0, 8, 2)
+    )
+    busy = Building("school", busy.rooms, busy.doors + extra, {})
+    habits = fit_model([*plain, busy], skip_misscaled=False).door_habits
+    assert habits.none_share == pytest.approx(2 / 3, abs=1e-4)
+    assert habits.mean_rate == pytest.approx(1.0)
+
+
+def test_door_habits__draw_none_at_the_share_and_the_mean_otherwise():
+    from realistic_indoor.models.building_model import DoorHabits
+
+    rng = np.random.default_rng(0)
+    draws = np.array([DoorHabits(0.3, 0.5).draw(rng) for _ in range(20000)])
+    assert (draws == 0).mean() == pytest.approx(0.3, abs=0.01)
+    assert draws[draws > 0].mean() == pytest.approx(0.5, abs=0.02)

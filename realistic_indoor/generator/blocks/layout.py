@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from realistic_indoor.generator.blocks.compose import compose
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section
+from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units
@@ -53,8 +54,9 @@ def block_plan(
         laid = _lay_out(rng, area_m2, model, style, blocks, 0.0)
     plan, shape = laid
     pairs = model.structures.connected_room_pairs
+    scale = door_habit_scale(model, rng)
     if blocks.suites:
-        make_suites(plan, rng, pairs / 2)
+        make_suites(plan, rng, min(pairs / 2 * scale, 1.0))
     connect_and_name(
         plan,
         rng,
@@ -62,7 +64,8 @@ def block_plan(
         style,
         core_on_facade=True,
         doors_per_room=blocks.doors_per_room,
-        pairs=0.0 if blocks.suites else pairs,
+        pairs=0.0 if blocks.suites else min(pairs * scale, 1.0),
+        door_scale=scale,
     )
     return plan, {"shape": shape}
 
@@ -87,7 +90,7 @@ def _lay_out(
     dims = layout_dims(rng, model, style)
     dims = replace(dims, corridor=round(dims.corridor * blocks.corridor_scale))
     area = round(area_to_units(area_m2 - annex_m2))
-    n_halls = int(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area() + rng.random())
+    n_halls = int(rng.poisson(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area()))
     hall_area = area_to_units(model.stats(H).area_mean)
     names = sorted(blocks.compositions)
     weights = [blocks.compositions[n] for n in names]
@@ -108,6 +111,9 @@ def _lay_out(
         widen_last_room=True,
     )
     lobby = exterior_walls(plan, 0) if plan.rooms and plan.rooms[0].label is H else []
-    if annex_m2 and add_annex(plan, rng, style, annex_m2, label=B, keep_clear=lobby) < 0:
+    if (
+        annex_m2
+        and add_annex(plan, rng, style, annex_m2, label=B, keep_clear=lobby, room_m=blocks.annex_room_m) < 0
+    ):
         return None
     return plan, shape

@@ -39,6 +39,9 @@ class BlockStyle:
             with a corridor door each and a door between them: real plans' connected rooms are
             mostly reached through each other, so most of their rooms keep one door.
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
+        annex_room_m: Range of the depth of the rooms along the annex's far side, and the
+            length along it each takes (m): a school gym's changing rooms and stores are group
+            rooms of about 30 m2 in the real plans, not cubicles.
         corridor_cuts: How many corridor segments to cut, as a share of the number the model's
             corridor share asks for (real plans divide corridors at doors, width changes and
             fire doors: their segments are short, axes ratio about 4 in offices).
@@ -61,6 +64,7 @@ class BlockStyle:
     max_axes_ratio: float = 1.6
     suites: bool = True
     max_bar_m: float = 90.0
+    annex_room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5)
     compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
 
@@ -88,6 +92,7 @@ SCHOOL_BLOCKS = BlockStyle(
     court_p=0.35,
     core_hall_p=0.3,
     corridor_scale=0.8,
+    annex_room_m=((3.4, 4.6), 7.0),
     compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

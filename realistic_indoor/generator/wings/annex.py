@@ -53,6 +53,7 @@ def add_annex(
     area_m2: float,
     label: SemanticLabel = SemanticLabel.HALL,
     keep_clear: Sequence[Contact] = (),
+    room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5),
 ) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 
@@ -65,7 +66,8 @@ def add_annex(
 
     ``label`` is the annex's semantic label: a hall (the paper's convention) or a big room (as
     the real school plans label their gyms). The annex never stands against a wall of
-    ``keep_clear`` (the lobby's facade, kept for the main entrance).
+    ``keep_clear`` (the lobby's facade, kept for the main entrance). ``room_m`` is the range of
+    the depth of the rooms on its far side and the length along it each takes (m).
 
     Returns:
         The annex's room index, or -1 if there was no free place (the building is then smaller
@@ -86,7 +88,7 @@ def add_annex(
         for i, w in order:
             box = _fit(plan, w, _outward(plan, i, w), long_side, short_side)
             if box is not None and not any(_against(box, c) for c in keep_clear):
-                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w), label)
+                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w), label, room_m)
     return -1
 
 
@@ -121,10 +123,12 @@ def _place(
     axis: str,
     sign: int,
     label: SemanticLabel,
+    room_m: tuple[tuple[float, float], float],
 ) -> int:
     """The annex hall, with a strip of small service rooms along its far side opening onto it."""
     x0, y0, x1, y1 = box
-    depth = to_units(rng.uniform(2.6, 3.4))
+    depths, length = room_m
+    depth = to_units(rng.uniform(*depths))
     if axis == "v":
         hall = (x0, y0, x1 - depth, y1) if sign > 0 else (x0 + depth, y0, x1, y1)
         strip, along = ((x1 - depth, x1) if sign > 0 else (x0, x0 + depth)), (y0, y1)
@@ -132,7 +136,7 @@ def _place(
         hall = (x0, y0, x1, y1 - depth) if sign > 0 else (x0, y0 + depth, x1, y1)
         strip, along = ((y1 - depth, y1) if sign > 0 else (y0, y0 + depth)), (x0, x1)
     annex = plan.add(PlanRoom([hall], label, function=style.annex, role="annex"))
-    n = max(2, (along[1] - along[0]) // to_units(3.5))
+    n = max(2, (along[1] - along[0]) // to_units(length))
     cuts = [along[0] + (along[1] - along[0]) * k // n for k in range(n + 1)]
     for k in range(n):
         a, b = cuts[k], cuts[k + 1]

@@ -6,12 +6,12 @@ from typing import TYPE_CHECKING
 
 import networkx as nx
 
-from realistic_indoor.building.labels import OUTSIDE
+from realistic_indoor.building.labels import CIRCULATION_LABELS, OUTSIDE
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
-__all__ = ["building_graph"]
+__all__ = ["building_graph", "circulation_loops"]
 
 
 def building_graph(building: Building, include_outside: bool = False) -> nx.MultiGraph:
@@ -28,3 +28,16 @@ def building_graph(building: Building, include_outside: bool = False) -> nx.Mult
         else:
             g.add_edge(d.room_a, d.room_b, key=d.id, width_m=d.width_m)
     return g
+
+
+def circulation_loops(building: Building) -> int:
+    """Independent loops of the corridors and halls: the cycle rank of their door graph.
+
+    Doors between two circulation rooms are counted once per pair (a wide opening and a door
+    between the same two corridors make no loop). 0 for a tree of corridors; 1 for a ring.
+    """
+    ids = [r.id for r in building.rooms if r.label in CIRCULATION_LABELS]
+    graph = nx.Graph(building.graph().subgraph(ids))
+    if graph.number_of_nodes() == 0:
+        return 0
+    return graph.number_of_edges() - graph.number_of_nodes() + nx.number_connected_components(graph)

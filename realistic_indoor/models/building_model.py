@@ -69,12 +69,15 @@ class LocalStructures:
             at least two other small rooms (service cores: toilets, storage, stairs together).
         junction_halls: Share of halls with doors to three or more corridors (halls at corridor
             junctions rather than at the end of one corridor).
+        ring_share: Share of buildings whose corridors and halls close at least one loop (a
+            ring round a core); 1 leaves the choice to the layout's proportions.
     """
 
     closets_per_room: float = 0.08
     connected_room_pairs: float = 0.08
     clustered_small_rooms: float = 0.6
     junction_halls: float = 0.4
+    ring_share: float = 1.0
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ from realistic_indoor.building.labels import (
     SemanticLabel,
     normalise_function,
 )
+from realistic_indoor.building.topology import circulation_loops
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.models.building_model import (
     BuildingTypeModel,
@@ -222,6 +223,7 @@ def _structures(plans: list[Building]) -> LocalStructures:
         connected_room_pairs=paired / medium_big if medium_big else default.connected_room_pairs,
         clustered_small_rooms=clustered / small if small else default.clustered_small_rooms,
         junction_halls=junction / halls if halls else default.junction_halls,
+        ring_share=round(float(np.mean([circulation_loops(b) > 0 for b in plans])), 4),
     )
 
 

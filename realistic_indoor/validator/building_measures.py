@@ -17,6 +17,7 @@ import networkx as nx
 import numpy as np
 
 from realistic_indoor.building.labels import CIRCULATION_LABELS, ROOM_LABELS
+from realistic_indoor.building.topology import circulation_loops
 from realistic_indoor.validator.connectivity import core_rooms
 
 if TYPE_CHECKING:
@@ -146,7 +147,7 @@ def building_measures(building: Building) -> BuildingMeasures:
         door_depth=depth,
         door_depth_norm=depth / math.sqrt(len(building.rooms)),
         one_door_share=_one_door_share(building),
-        circulation_loops=_circulation_loops(building),
+        circulation_loops=circulation_loops(building),
         core_facade_share=_core_facade_share(building, shape),
     )
 
@@ -171,15 +172,6 @@ def _one_door_share(building: Building) -> float:
     if not rooms:
         return math.nan
     return sum(len(building.doors_of[r.id]) == 1 for r in rooms) / len(rooms)
-
-
-def _circulation_loops(building: Building) -> int:
-    ids = [r.id for r in building.rooms if r.label in CIRCULATION_LABELS]
-    graph = nx.Graph(building.graph().subgraph(ids))
-    if graph.number_of_nodes() == 0:
-        return 0
-    components = nx.number_connected_components(graph)
-    return graph.number_of_edges() - graph.number_of_nodes() + components
 
 
 def _core_facade_share(building: Building, shape: BaseGeometry) -> float:

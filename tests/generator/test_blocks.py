@@ -84,3 +84,25 @@ def test_blocks__layout_and_model_names_are_checked():
         make_generator("office", layout="maze")
     with pytest.raises(ConfigError, match="unknown model 'tabel'"):
         make_generator("school", model="tabel")
+
+
+def test_compose__an_e_stands_its_wings_evenly_on_the_main_bar():
+    from realistic_indoor.generator.blocks.compose import compose
+
+    rng = np.random.default_rng(4)
+    dims = Dims(corridor=25, depth=80, shallow=35, hall_area=6000)
+    regions = compose(rng, "E", 500_000, dims, SCHOOL_BLOCKS, 3, 6000.0, wings=3)
+    assert regions is not None
+    # the main bar's corridor plus, per wing, its connector and its own corridor
+    assert len(regions.corridors) >= 1 + 2 * 3
+    shape = unary_union([box(*r) for r in regions.corridors + [b.rect for b in regions.bays]])
+    assert shape.geom_type == "Polygon"  # one connected footprint
+
+
+def test_schools__without_rings_as_often_as_the_real_plans(samples):
+    """The fitted share of real schools whose corridors close a loop is 0.15: most generated
+    schools of the default size are bars, L, T, U or E shapes, whose corridors form a tree."""
+    from realistic_indoor.building.topology import circulation_loops
+
+    rings = np.mean([circulation_loops(b) > 0 for b in samples("school")[:100]])
+    assert rings < 0.4

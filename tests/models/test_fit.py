@@ -160,3 +160,20 @@ def test_door_habits__draw_none_at_the_share_and_the_mean_otherwise():
     draws = np.array([DoorHabits(0.3, 0.5).draw(rng) for _ in range(20000)])
     assert (draws == 0).mean() == pytest.approx(0.3, abs=0.01)
     assert draws[draws > 0].mean() == pytest.approx(0.5, abs=0.02)
+
+
+def test_fit_model__ring_share_counts_plans_whose_corridors_close_a_loop():
+    tree = _row_of_rooms(6.0, 4)
+    # two more corridors under the first, each joined to it and to the other: a loop of three
+    extra = (
+        Room.rectangle("c2", "corridor", "corridor", (0.0, -2.0, 12.0, 0.0)),
+        Room.rectangle("c3", "corridor", "corridor", (12.0, -2.0, 24.0, 0.0)),
+    )
+    doors = (
+        Door("j1", "c", "c2", 6.0, 0.0, 0.9, 0.0),
+        Door("j2", "c", "c3", 18.0, 0.0, 0.9, 0.0),
+        Door("j3", "c2", "c3", 12.0, -1.0, 0.9, np.pi / 2),
+    )
+    ring = Building("school", (*tree.rooms, *extra), tree.doors + doors, {})
+    structures = fit_model([tree, tree, ring, ring], skip_misscaled=False).structures
+    assert structures.ring_share == pytest.approx(0.5)

@@ -1,9 +1,9 @@
-"""Footprints of several blocks: a main bar with wings at right angles (L, T and U shapes).
+"""Footprints of several blocks: a main bar with wings at right angles (L, T, U and E shapes).
 
 Real schools, and some offices, are double-loaded bars joined at right angles rather than one
 deep block. A composed footprint is a main bar (one corridor, rooms on both sides) with one
-wing (an L at an end, a T in between) or two (a U, one at each end) standing on its north
-facade. Each wing is a bar too, turned a quarter: its corridor meets the main corridor through
+wing (an L at an end, a T in between), two (a U, one at each end) or more (an E or comb, evenly
+spaced: large schools without a ring corridor) standing on its north facade. Each wing is a bar too, turned a quarter: its corridor meets the main corridor through
 a short corridor cut across the main bar's north strip, and runs on to the wing's far end.
 """
 
@@ -25,8 +25,8 @@ if TYPE_CHECKING:
 
 __all__ = ["WINGS", "compose"]
 
-WINGS = {"L": 1, "T": 1, "U": 2}
-"""Wings of each composed shape."""
+WINGS = {"L": 1, "T": 1, "U": 2, "E": 3}
+"""Wings of each composed shape (an E may be given more)."""
 
 MIN_COURT_M = 9.0
 """Narrowest open space between the two wings of a U (m)."""
@@ -43,6 +43,7 @@ def compose(
     style: BlockStyle,
     n_halls: int,
     hall_area: float,
+    wings: int | None = None,
 ) -> Regions | None:
     """The regions of a main bar with wings for ``area`` (square units).
 
@@ -51,16 +52,16 @@ def compose(
 
     Args:
         rng: Random generator.
-        shape: ``"L"``, ``"T"`` or ``"U"`` (see :data:`WINGS`).
+        shape: ``"L"``, ``"T"``, ``"U"`` or ``"E"`` (see :data:`WINGS`).
         area: Floor area wanted (square units).
         dims: Corridor width and strip depths.
         style: The type's block conventions.
         n_halls: Halls wanted in all, the lobby (in the main bar) first.
         hall_area: Mean hall area (square units).
+        wings: Wings of an E (default :data:`WINGS`).
     """
-    n_wings = WINGS[shape]
-    share = rng.uniform(0.45, 0.6) if n_wings == 2 else rng.uniform(0.5, 0.7)
-    main_area = round(area * share)
+    n_wings = wings if shape == "E" and wings else WINGS[shape]
+    main_area = round(area * _main_share(rng, n_wings, area, dims, style))
     main, guess = draw_section(rng, main_area, dims, style, max(n_halls - n_wings, 1), hall_area, bars=1)
     main = _north_free(main)
     length = length_for_area(main, guess, main_area)
@@ -71,11 +72,27 @@ def compose(
     for k in range(n_wings):
         wing, guess = draw_section(rng, wing_area, dims, style, 1, hall_area, bars=1)
         wing_length = length_for_area(wing, guess, wing_area)
-        x = _wing_x(rng, shape, k, length, wing.depth)
+        x = _wing_x(rng, shape, k, length, wing.depth, n_wings)
         if x is None or wing_length > to_units(style.max_bar_m):
             return None
         _attach(regions, main, wing, paint_block(wing, wing_length), x, k)
     return regions
+
+
+def _main_share(rng: np.random.Generator, n_wings: int, area: int, dims: Dims, style: BlockStyle) -> float:
+    """The main bar's share of the area.
+
+    Drawn for an L, T or U; for an E, what makes the main bar just long enough for its wings
+    and the courts between them.
+    """
+    if n_wings == 1:
+        return rng.uniform(0.5, 0.7)
+    if n_wings == 2:
+        return rng.uniform(0.45, 0.6)
+    bar = 2 * dims.depth * sum(style.facade_scale) / 2 + dims.corridor
+    length = n_wings * bar + (n_wings - 1) * to_units(MIN_COURT_M * rng.uniform(1.1, 2.0))
+    length = min(length, 0.9 * to_units(style.max_bar_m))  # the drawn section may come out deeper
+    return min(max(length * bar / area, 0.15), 0.6)
 
 
 def _north_free(s: Section) -> Section:
@@ -85,8 +102,12 @@ def _north_free(s: Section) -> Section:
     return replace(s, halls=halls, steps=steps)
 
 
-def _wing_x(rng: np.random.Generator, shape: str, k: int, length: int, depth: int) -> int | None:
+def _wing_x(rng: np.random.Generator, shape: str, k: int, length: int, depth: int, n: int) -> int | None:
     """Where a wing's west side stands along the main bar (units), or ``None`` if it does not fit."""
+    if shape == "E":
+        if (length - n * depth) / (n - 1) < to_units(MIN_COURT_M):
+            return None
+        return round(k * (length - depth) / (n - 1))
     if shape == "U":
         if length - 2 * depth < to_units(MIN_COURT_M):
             return None

@@ -11,7 +11,7 @@ from realistic_indoor.generator.blocks.section import Section, draw_section
 from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
-from realistic_indoor.generator.geometry import area_to_units
+from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
 from realistic_indoor.generator.wings.annex import add_annex
 
@@ -19,6 +19,8 @@ if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.generator.blocks.style import BlockStyle
+    from realistic_indoor.generator.wings.paint import Regions
+    from realistic_indoor.generator.wings.sizing import Dims
     from realistic_indoor.generator.wings.style import WingStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
@@ -75,6 +77,37 @@ def _shape_name(s: Section) -> str:
     return name + ("+court" if s.courts else "")
 
 
+MAX_COMB_WINGS = 6
+"""Most wings of a comb (an E) tried for a large building without a ring."""
+
+
+def _no_ring(rng: np.random.Generator, model: BuildingTypeModel) -> bool:
+    """Whether a building that is not an L, T or U is to have no ring corridor.
+
+    Drawn with probability ``1 - ring_share`` (the model's share of buildings whose corridors
+    close a loop); nothing is drawn for a model that leaves rings to the block's proportions.
+    """
+    ring_share = model.structures.ring_share
+    return ring_share < 1.0 and rng.random() >= ring_share
+
+
+def _one_bar_fits(area: int, dims: Dims, blocks: BlockStyle) -> bool:
+    """Whether one double-loaded bar of the area is at most the style's ``max_bar_m`` long."""
+    depth = 2 * dims.depth * sum(blocks.facade_scale) / 2 + dims.corridor
+    return area / depth <= to_units(blocks.max_bar_m)
+
+
+def _comb(
+    rng: np.random.Generator, area: int, dims: Dims, blocks: BlockStyle, n_halls: int, hall_area: float
+) -> Regions | None:
+    """A main bar with 3 or more evenly spaced wings (an E), the fewest whose bars fit; or ``None``."""
+    for wings in range(3, MAX_COMB_WINGS + 1):
+        regions = compose(rng, "E", area, dims, blocks, n_halls, hall_area, wings=wings)
+        if regions is not None:
+            return regions
+    return None
+
+
 def _lay_out(
     rng: np.random.Generator,
     area_m2: float,
@@ -96,8 +129,14 @@ def _lay_out(
     weights = [blocks.compositions[n] for n in names]
     shape = names[int(rng.choice(len(names), p=[w / sum(weights) for w in weights]))]
     regions = compose(rng, shape, area, dims, blocks, n_halls, hall_area) if shape != "I" else None
+    bars = None
+    if regions is None and _no_ring(rng, model):
+        if _one_bar_fits(area, dims, blocks):
+            bars = 1
+        else:
+            regions, shape = _comb(rng, area, dims, blocks, n_halls, hall_area), "E"
     if regions is None:
-        section, length = draw_section(rng, area, dims, blocks, n_halls, hall_area)
+        section, length = draw_section(rng, area, dims, blocks, n_halls, hall_area, bars=bars)
         regions, shape = paint_block(section, length_for_area(section, length, area)), _shape_name(section)
     plan = rooms_from_regions(
         regions,

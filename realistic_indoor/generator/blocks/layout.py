@@ -130,7 +130,7 @@ def _lay_out(
     shape = names[int(rng.choice(len(names), p=[w / sum(weights) for w in weights]))]
     regions = compose(rng, shape, area, dims, blocks, n_halls, hall_area) if shape != "I" else None
     bars = None
-    if regions is None and _no_ring(rng, model):
+    if regions is None and blocks.ring_share and _no_ring(rng, model):
         if _one_bar_fits(area, dims, blocks):
             bars = 1
         else:

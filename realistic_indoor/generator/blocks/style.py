@@ -39,6 +39,11 @@ class BlockStyle:
             with a corridor door each and a door between them: real plans' connected rooms are
             mostly reached through each other, so most of their rooms keep one door.
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
+        ring_share: Follow the model's share of buildings with a ring corridor
+            (``LocalStructures.ring_share``): a block drawn without one is one double-loaded
+            bar, or an E (a main bar with 3 or more wings) where one bar would be too long.
+            Schools do (15% of the shared real schools have a loop); offices leave rings to
+            the block's proportions, since their plans without a loop are still compact blocks.
         annex_room_m: Range of the depth of the rooms along the annex's far side, and the
             length along it each takes (m): a school gym's changing rooms and stores are group
             rooms of about 30 m2 in the real plans, not cubicles.
@@ -65,6 +70,7 @@ class BlockStyle:
     suites: bool = True
     max_bar_m: float = 90.0
     annex_room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5)
+    ring_share: bool = False
     compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
 
@@ -93,6 +99,7 @@ SCHOOL_BLOCKS = BlockStyle(
     core_hall_p=0.3,
     corridor_scale=0.8,
     annex_room_m=((3.4, 4.6), 7.0),
+    ring_share=True,
     compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},
 )
 """Schools: classroom strips on both sides of corridors, courtyards in the larger ones."""

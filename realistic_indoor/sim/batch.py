@@ -186,7 +186,8 @@ def step_batch(
     n_beams = cos_off.shape[0]
     max_range, noise_std, closed = lidar[0], lidar[1], lidar[2] > 0.5
     pool, pixel = int(local[0]), local[1]
-    for i in prange(n):
+    for k in prange(n):
+        i = np.int64(k)  # prange counts in uint64; lists index with a signed int
         if mode[i] == SKIP:
             continue
         b = robot_building[i]

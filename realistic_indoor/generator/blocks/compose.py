@@ -3,8 +3,9 @@
 Real schools, and some offices, are double-loaded bars joined at right angles rather than one
 deep block. A composed footprint is a main bar (one corridor, rooms on both sides) with one
 wing (an L at an end, a T in between), two (a U, one at each end) or more (an E or comb, evenly
-spaced: large schools without a ring corridor) standing on its north facade. Each wing is a bar too, turned a quarter: its corridor meets the main corridor through
-a short corridor cut across the main bar's north strip, and runs on to the wing's far end.
+spaced: large schools without a ring corridor) standing on its north facade. Each wing is a bar
+too, turned a quarter: its corridor meets the main corridor through a short corridor cut across
+the main bar's north strip, and runs on to the wing's far end.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
-from realistic_indoor.generator.blocks.section import Section, draw_section
+from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
 from realistic_indoor.generator.geometry import Rect, to_units
 from realistic_indoor.generator.wings.paint import Bay, Regions
 
@@ -89,7 +90,7 @@ def _main_share(rng: np.random.Generator, n_wings: int, area: int, dims: Dims, s
         return rng.uniform(0.5, 0.7)
     if n_wings == 2:
         return rng.uniform(0.45, 0.6)
-    bar = 2 * dims.depth * sum(style.facade_scale) / 2 + dims.corridor
+    bar = mean_block_depth(dims, style, 1)
     length = n_wings * bar + (n_wings - 1) * to_units(MIN_COURT_M * rng.uniform(1.1, 2.0))
     length = min(length, 0.9 * to_units(style.max_bar_m))  # the drawn section may come out deeper
     return min(max(length * bar / area, 0.15), 0.6)

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.blocks.compose import compose
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
-from realistic_indoor.generator.blocks.section import Section, draw_section
+from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
 from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
@@ -93,8 +93,7 @@ def _no_ring(rng: np.random.Generator, model: BuildingTypeModel) -> bool:
 
 def _one_bar_fits(area: int, dims: Dims, blocks: BlockStyle) -> bool:
     """Whether one double-loaded bar of the area is at most the style's ``max_bar_m`` long."""
-    depth = 2 * dims.depth * sum(blocks.facade_scale) / 2 + dims.corridor
-    return area / depth <= to_units(blocks.max_bar_m)
+    return area / mean_block_depth(dims, blocks, 1) <= to_units(blocks.max_bar_m)
 
 
 def _comb(

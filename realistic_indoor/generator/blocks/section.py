@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from realistic_indoor.generator.blocks.style import BlockStyle
     from realistic_indoor.generator.wings.sizing import Dims
 
-__all__ = ["Hall", "Section", "draw_section"]
+__all__ = ["Hall", "Section", "draw_section", "mean_block_depth"]
 
 MIN_STRIP_M = 3.0
 """Shallowest strip of rooms a step may leave (m)."""
@@ -131,17 +131,27 @@ def draw_section(
     return Section(tuple(depths), corridor, end, crossings, halls, courts, steps), length
 
 
-def _bars_for(area: int, aspect: float, dims: Dims, style: BlockStyle) -> int:
-    """The number of bars whose block, at the area, comes nearest the aspect ratio.
+def mean_block_depth(dims: Dims, style: BlockStyle, bars: int) -> float:
+    """Mean depth of a block of ``bars`` bars (units).
 
-    A block of ``k`` bars is two facade strips, ``2 (k - 1)`` core strips and ``k`` corridors
-    deep (mean depths); its length is the area over that depth.
+    Two facade strips, ``2 (bars - 1)`` core strips and ``bars`` corridors, at the middle of the
+    style's ranges of strip depth.
     """
     facade = dims.depth * sum(style.facade_scale) / 2
     core = dims.depth * sum(style.core_scale) / 2
+    return 2 * facade + 2 * (bars - 1) * core + bars * dims.corridor
+
+
+def _bars_for(area: int, aspect: float, dims: Dims, style: BlockStyle) -> int:
+    """The number of bars whose block, at the area, comes nearest the aspect ratio.
+
+    A block of ``k`` bars is :func:`mean_block_depth` deep; its length is the area over that
+    depth.
+    """
+    facade = dims.depth * sum(style.facade_scale) / 2
 
     def miss(k: int) -> float:
-        depth = 2 * facade + 2 * (k - 1) * core + k * dims.corridor
+        depth = mean_block_depth(dims, style, k)
         length = area / depth
         if k > 1 and length < 2 * facade + 2 * dims.corridor + to_units(8.0):
             return math.inf

@@ -23,7 +23,8 @@ from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observation
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import N_TERMS, RESET, SKIP, STEP, Batch, step_batch
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
-from realistic_indoor.sim.lidar import Lidar
+from realistic_indoor.sim.lidar import beam_offsets
+from realistic_indoor.sim.mapping import beam_table
 from realistic_indoor.sim.world import World
 
 __all__ = ["INFO_KEYS", "BatchedExploreEnv"]
@@ -104,10 +105,7 @@ class BatchedExploreEnv(VectorEnv):
 
     def _init_arrays(self) -> None:
         c, n = self.config, self.num_envs
-        lidar = Lidar(c.lidar)
-        self._cos, self._sin = np.cos(lidar.offsets_rad), np.sin(lidar.offsets_rad)
-        span = lidar.offsets_rad[-1] - lidar.offsets_rad[0]
-        closed = c.lidar.n_beams > 2 and np.isclose(span * c.lidar.n_beams / (c.lidar.n_beams - 1), 2 * np.pi)
+        self._cos, self._sin, closed = beam_table(beam_offsets(c.lidar))
         self._lidar = np.array([c.lidar.max_range_m, c.lidar.noise_std_m, float(closed)])
         self._pool = max(1, int(c.local_map.resolution_m / c.world.resolution_m + 1e-9))
         self._local = np.array([self._pool, c.local_map.resolution_m / (c.world.resolution_m * self._pool)])

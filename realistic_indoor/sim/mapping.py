@@ -43,6 +43,7 @@ __all__ = [
     "FreeSpaceMarker",
     "LocalMapConfig",
     "RobotMap",
+    "beam_table",
 ]
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
@@ -216,7 +217,7 @@ class RobotMap:
 
     def _set_beams(self, offsets: np.ndarray) -> None:
         self._offsets = offsets
-        self._cos, self._sin, self._closed = _beam_table(offsets)
+        self._cos, self._sin, self._closed = beam_table(offsets)
 
 
 class FreeSpaceMarker:
@@ -247,7 +248,7 @@ class FreeSpaceMarker:
             raise ConfigError(f"FreeSpaceMarker needs a 1-D array of beam offsets, got shape {offsets.shape}")
         self.shape = (int(shape[0]), int(shape[1]))
         self.resolution_m = resolution_m
-        self._cos, self._sin, self._closed = _beam_table(offsets)
+        self._cos, self._sin, self._closed = beam_table(offsets)
         self._kind = np.full(len(offsets), RASTER_FREE, dtype=np.uint8)  # no beam marks a wall
         self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
         self._todo_at_start = free_per_strip(self._targets)
@@ -293,8 +294,12 @@ class FreeSpaceMarker:
         return self._grid == MAPPED_FREE
 
 
-def _beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
-    """Cosines and sines of the beam offsets, and whether the beams close a full circle."""
+def beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
+    """Cosines and sines of the beam offsets, and whether the beams close a full circle.
+
+    A closed fan also sweeps between its last and first beam; every map update (the robot's
+    map, :class:`FreeSpaceMarker`, the batched simulation) decides it here.
+    """
     n = len(offsets)
     span = (offsets[-1] - offsets[0]) * n / (n - 1) if n > 2 else 0.0
     return np.cos(offsets), np.sin(offsets), bool(n > 2 and math.isclose(span, 2 * math.pi, abs_tol=1e-6))

@@ -127,6 +127,8 @@ def _size_scaling(plans: list[Building]) -> SizeScaling:
     area the reference (where the pooled label means hold). Fewer than three plans, or plans all
     of one size, give no scaling.
     """
+    if len({b.area for b in plans}) < 3:
+        return SizeScaling()
     points = []
     for lab in SemanticLabel:
         pooled = [r.area for b in plans for r in b.rooms if r.label is lab]
@@ -137,7 +139,7 @@ def _size_scaling(plans: list[Building]) -> SizeScaling:
             areas = [r.area for r in b.rooms if r.label is lab]
             if areas and b.area > 0:
                 points.append((np.log(b.area), np.log(np.mean(areas) / mean), len(areas)))
-    if len({b.area for b in plans}) < 3 or not points:
+    if not points:
         return SizeScaling()
     x, y, w = (np.array(v, dtype=float) for v in zip(*points, strict=True))
     x_ref = float(np.average(x, weights=w))

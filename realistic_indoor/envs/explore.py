@@ -24,7 +24,8 @@ class ExploreEnv(gym.Env):
 
     ## Description
 
-    A disc robot (pymunk physics: it collides with the walls and slides along them) starts at
+    A disc robot (compiled physics, or pymunk with ``robot={"physics": "pymunk"}``: it collides
+    with the walls and slides along them) starts at
     the entrance of a building it has never seen. Each control step it drives with the
     commanded linear and angular velocity, takes a laser scan and adds it to its occupancy
     map. The goal is to observe the building's floor as fast as possible without bumping into

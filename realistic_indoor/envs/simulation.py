@@ -6,9 +6,9 @@ import math
 from typing import TYPE_CHECKING, NamedTuple
 
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.disc_physics import DiscRobot, robot_in_world
 from realistic_indoor.sim.lidar import Lidar, Scan
 from realistic_indoor.sim.mapping import RobotMap
-from realistic_indoor.sim.robot import Robot
 from realistic_indoor.sim.victims import Victims, place_victims
 from realistic_indoor.sim.world import World
 
@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 
     from realistic_indoor.building.building import Building
     from realistic_indoor.envs.config import EnvConfig
+    from realistic_indoor.sim.robot import Robot
 
 __all__ = ["Simulation", "StepOutcome"]
 
@@ -67,7 +68,7 @@ class Simulation:
         self.lidar = Lidar(config.lidar)
         self.victims = Victims(config.victims) if victims else None
         self.world: World | None = None
-        self.robot: Robot
+        self.robot: DiscRobot | Robot
         self.map: RobotMap
         self.scan: Scan
         self.path_length_m = 0.0
@@ -89,7 +90,7 @@ class Simulation:
         if building is self.building:
             return
         self.world = World(building, self.config.world)
-        self.robot = Robot.in_world(self.world, self.config.robot)
+        self.robot = robot_in_world(self.world, self.config.robot)
         self.map = RobotMap(self.world, self.config.local_map)
 
     def reset(self, rng: np.random.Generator, victims_xy: np.ndarray | None = None) -> None:

@@ -42,9 +42,9 @@ class BatchedExploreEnv(VectorEnv):
     The same task, spaces, rewards and episode ends as :class:`~realistic_indoor.envs.ExploreEnv`
     (see there); what differs:
 
-    - **Physics**: the compiled disc of :mod:`realistic_indoor.sim.disc_physics`, which follows
-      pymunk's robot within the tolerance its tests state (exactly along a single wall; within
-      a few millimetres, at most 5 cm over 1,000 steps, where it touches two walls at once).
+    - **Physics**: the compiled disc of :mod:`realistic_indoor.sim.disc_physics` only, the
+      single environment's default: sub-environment ``k`` then runs exactly the episode of an
+      ``ExploreEnv`` seeded as it is (``RobotConfig(physics="pymunk")`` is refused here).
     - **Autoreset**: Gymnasium's next-step mode (``metadata["autoreset_mode"]``). The step that
       ends a sub-environment's episode returns its last observation; its next step ignores the
       action, starts a new episode (a new building drawn from that sub-environment's random
@@ -84,6 +84,11 @@ class BatchedExploreEnv(VectorEnv):
             overrides = {"max_steps": max_episode_steps, **overrides}
         self.config = base_config(config, preset).replace(**overrides)
         require_task_fields(self.config, "explore", overrides)
+        if self.config.robot.physics != "compiled":
+            raise ConfigError(
+                f"the native vector env runs the compiled physics only, got robot physics "
+                f"{self.config.robot.physics!r}; use gym.make_vec(..., vectorization_mode='sync') for pymunk"
+            )
         self.num_envs = num_envs
         self.render_mode = None
         self._source = self.config.source.generator()
@@ -172,7 +177,9 @@ class BatchedExploreEnv(VectorEnv):
         self._steps += stepped
         self._path += self._motion * stepped
         self._collisions += (self._terms[:, 1] > 0) & stepped
-        reward = np.where(stepped, self._terms @ self._weights, 0.0)
+        weighted = self._terms * self._weights
+        total = weighted[:, 0] + weighted[:, 1] + weighted[:, 2]  # the single env's order of sums
+        reward = np.where(stepped, total, 0.0)
         coverage = self._coverage()
         terminated = stepped & (coverage >= self.config.coverage_target)
         truncated = stepped & ~terminated & (self._steps >= self.config.max_steps)

@@ -3,7 +3,7 @@
 Typical use, one building::
 
     world = World(building)                      # raster, raycaster, start pose, reachable floor
-    robot = Robot.in_world(world)                # pymunk disc at the start pose
+    robot = robot_in_world(world)                # compiled disc at the start pose
     lidar, robot_map = Lidar(), RobotMap(world)
     motion = robot.step(0.5, 0.2)                # one control step: (v m/s, w rad/s)
     scan = lidar.scan(world.raycaster, robot.pose, rng)
@@ -22,6 +22,7 @@ import importlib
 from typing import Any
 
 _WHERE = {
+    "disc_physics": ("DiscRobot", "robot_in_world"),
     "fields": ("distance_field",),
     "lidar": ("Lidar", "LidarConfig", "Scan", "beam_offsets"),
     "mapping": (
@@ -53,6 +54,7 @@ __all__ = [
     "RASTER_FREE",
     "RASTER_OUTSIDE",
     "RASTER_WALL",
+    "DiscRobot",
     "FreeSpaceMarker",
     "Lidar",
     "LidarConfig",
@@ -75,6 +77,7 @@ __all__ = [
     "place_victims",
     "rasterize",
     "relative_polar",
+    "robot_in_world",
 ]
 
 

@@ -232,7 +232,7 @@ def step_batch(
         )
         observed[i] += new
         render_local(pooled[i], LUT, px / pool, py / pool, ch, sh, pixel, out_local[i, 0])
-        out_terms[i, 0] = new * res * res
+        out_terms[i, 0] = new * (res * res)  # as RobotMap.update: cells times the cell area
         out_terms[i, 1] = 1.0 if collided else 0.0
         out_terms[i, 2] = 1.0
         out_motion[i] = distance

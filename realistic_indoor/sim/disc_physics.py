@@ -28,14 +28,17 @@ the segments that can touch a disc centred anywhere in it, so a sub-step tests o
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.robot import _COLLISION_BIAS, _COLLISION_SLOP_M, Motion, RobotConfig
+from realistic_indoor.sim.robot import _COLLISION_BIAS, _COLLISION_SLOP_M, Motion, Robot, RobotConfig
 
-__all__ = ["STATE_SIZE", "DiscRobot", "SegmentGrid", "drive_params", "segment_grid"]
+if TYPE_CHECKING:
+    from realistic_indoor.sim.world import World
+
+__all__ = ["STATE_SIZE", "DiscRobot", "SegmentGrid", "drive_params", "robot_in_world", "segment_grid"]
 
 SOLVER_ITERATIONS = 10
 """Iterations of the contact solver per sub-step (pymunk's default ``space.iterations``)."""
@@ -154,6 +157,11 @@ class DiscRobot:
         self.state = np.zeros(STATE_SIZE, dtype=np.float64)
         self.reset(pose)
 
+    @classmethod
+    def in_world(cls, world: World, config: RobotConfig | None = None) -> DiscRobot:
+        """A robot among ``world``'s walls, at its start pose."""
+        return cls(world.collision_segments, config, world.config.wall_thickness_m, world.start_pose)
+
     def reset(self, pose: tuple[float, float, float]) -> None:
         """Put the robot at ``pose`` ``(x, y, theta)``, at rest."""
         self.state[:] = 0.0
@@ -177,6 +185,21 @@ class DiscRobot:
             self.state, float(v_m_s), float(w_rad_s), g.segments, g.start, g.items, g.origin, self.params
         )
         return Motion(bool(collided), float(distance))
+
+
+def robot_in_world(world: World, config: RobotConfig | None = None) -> DiscRobot | Robot:
+    """A robot at ``world``'s start pose, moved by the physics ``config.physics`` names.
+
+    Args:
+        world: The world whose walls the robot collides with.
+        config: Body, limits, control rate and physics (default :class:`RobotConfig`).
+
+    Returns:
+        A :class:`DiscRobot` (``"compiled"``) or a pymunk :class:`~realistic_indoor.sim.robot.Robot`.
+    """
+    config = config or RobotConfig()
+    kind = DiscRobot if config.physics == "compiled" else Robot
+    return kind.in_world(world, config)
 
 
 @njit(cache=True, nogil=True)

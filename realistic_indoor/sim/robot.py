@@ -15,7 +15,12 @@ from realistic_indoor.errors import ConfigError
 if TYPE_CHECKING:
     from realistic_indoor.sim.world import World
 
-__all__ = ["Motion", "Robot", "RobotConfig"]
+__all__ = ["PHYSICS", "Motion", "Robot", "RobotConfig"]
+
+PHYSICS = ("compiled", "pymunk")
+"""How a robot's motion is computed: the compiled disc of
+:mod:`~realistic_indoor.sim.disc_physics` (fast, the default, and the only one the batched
+simulation runs) or pymunk (:class:`Robot`, the reference the compiled disc is tested against)."""
 
 _ROBOT, _WALL = 1, 2  # pymunk collision types
 _MASS_KG = 10.0
@@ -39,6 +44,8 @@ class RobotConfig:
         control_hz: Commands per second; one :meth:`Robot.step` lasts ``1 / control_hz`` s.
         substeps: Physics steps per control step. A sub-step must not move the robot more than
             half its radius (no tunnelling through walls); the config checks it.
+        physics: ``"compiled"`` (default) or ``"pymunk"``, see :data:`PHYSICS`. Both move the
+            robot the same way, to within millimetres where it touches two walls at once.
     """
 
     radius_m: float = 0.25
@@ -48,8 +55,13 @@ class RobotConfig:
     max_angular_accel_rad_s2: float = 8.0
     control_hz: float = 5.0
     substeps: int = 4
+    physics: str = "compiled"
 
     def __post_init__(self) -> None:
+        if self.physics not in PHYSICS:
+            raise ConfigError(
+                f"RobotConfig.physics must be one of {', '.join(PHYSICS)}, got {self.physics!r}"
+            )
         for name, unit in (
             ("radius_m", "m"),
             ("max_speed_m_s", "m/s"),

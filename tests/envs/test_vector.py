@@ -64,14 +64,35 @@ def test_vector_env__sub_env_k_is_the_single_env_seeded_with_seed_plus_k():
     first, _ = single.reset(seed=11)
     assert data_equivalence(first, {k: v[1] for k, v in obs.items()}, exact=True)
     rng = np.random.default_rng(0)
+    for _ in range(150):  # one physics, one set of kernels: the same episode, exactly
+        actions = rng.uniform(-1, 1, (2, 2)).astype(np.float32)
+        obs, reward, terminated, truncated, info = envs.step(actions)
+        one, one_reward, one_terminated, one_truncated, one_info = single.step(actions[1])
+        assert data_equivalence(one, {k: v[1] for k, v in obs.items()}, exact=True)
+        assert (one_reward, one_terminated, one_truncated) == (reward[1], terminated[1], truncated[1])
+        assert one_info["coverage"] == info["coverage"][1]
+        assert one_info["path_length_m"] == pytest.approx(info["path_length_m"][1], abs=1e-9)
+
+
+def test_vector_env__follows_the_pymunk_reference_within_the_physics_tolerance():
+    envs = _make(n=1)
+    obs, _ = envs.reset(seed=3)
+    single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"], robot={"physics": "pymunk"})
+    single.reset(seed=3)
+    rng = np.random.default_rng(1)
     exact_steps = 0
     for _ in range(150):
-        actions = rng.uniform(-1, 1, (2, 2)).astype(np.float32)
+        actions = rng.uniform(-1, 1, (1, 2)).astype(np.float32)
         obs, *_ = envs.step(actions)
-        one, *_ = single.step(actions[1])
-        assert np.abs(one["pose"][:2] - obs["pose"][1, :2]).max() < POSE_TOLERANCE_M
-        exact_steps += bool(np.array_equal(one["scan"], obs["scan"][1]))
+        one, *_ = single.step(actions[0])
+        assert np.abs(one["pose"][:2] - obs["pose"][0, :2]).max() < POSE_TOLERANCE_M
+        exact_steps += bool(np.array_equal(one["scan"], obs["scan"][0]))
     assert exact_steps > 0
+
+
+def test_vector_env__refuses_the_pymunk_physics():
+    with pytest.raises(ConfigError, match="compiled"):
+        _make(robot={"physics": "pymunk"})
 
 
 def test_vector_env__autoresets_on_the_next_step():

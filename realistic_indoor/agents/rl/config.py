@@ -47,8 +47,8 @@ class PPOConfig:
         n_envs: Environments run in parallel.
         vec_env: ``"subproc"`` (one process each, the default), ``"dummy"`` (all in this
             process) or ``"batched"`` (the ids' native vector environments: all sub-environments
-            of an id stepped by one compiled call, in this process, with the compiled disc
-            physics instead of pymunk; the search ids fall back to ``"dummy"``). At the default
+            of an id stepped by one compiled call, in this process; the search ids fall back to
+            ``"dummy"``). At the default
             4 environments over three ids, ``"batched"`` measured 7,500-7,700 env-steps/s
             against 9,500 for ``"dummy"`` (loaded 2-core machine); it pays off with many
             environments per id.

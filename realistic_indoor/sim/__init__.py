@@ -13,7 +13,7 @@ Typical use, one building::
 See ``docs/simulator.md``.
 
 Names are imported on first use, so ``from realistic_indoor.sim.raster import rasterize``
-(e.g. for a map export) does not load numba and pymunk.
+(e.g. for a map export) does not load pymunk, nor numba until it rasterizes.
 """
 
 from __future__ import annotations

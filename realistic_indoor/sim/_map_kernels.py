@@ -13,7 +13,7 @@ import math
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.raster import RASTER_WALL
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_WALL
 
 MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
 """States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
@@ -86,6 +86,24 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
 
 
 @njit(cache=True, nogil=True)
+def map_targets(grid, reachable):  # pragma: no cover - compiled
+    """What a beam may mark in each cell (``TRUTH_*``) from the raster codes and reachable cells."""
+    h, w = grid.shape
+    out = np.empty((h, w), dtype=np.uint8)
+    for r in range(h):
+        for c in range(w):
+            if reachable[r, c]:
+                out[r, c] = TRUTH_REACHABLE
+            elif grid[r, c] == RASTER_FREE:
+                out[r, c] = TRUTH_FREE
+            elif grid[r, c] == RASTER_WALL:
+                out[r, c] = TRUTH_WALL
+            else:
+                out[r, c] = TRUTH_OUTSIDE
+    return out
+
+
+@njit(cache=True, nogil=True)
 def free_per_strip(targets):  # pragma: no cover - compiled
     """Number of free cells (``targets >= TRUTH_FREE``) in each row strip of ``STRIP`` cells."""
     h, w = targets.shape
@@ -131,24 +149,28 @@ def _polygon_spans(vx, vy, h, w):  # pragma: no cover - compiled
     not with edges times rows.
     """
     nv = vx.shape[0]
-    r_lo = max(math.ceil(vy.min() - 0.5), 0)
-    r_hi = min(math.ceil(vy.max() - 0.5), h)
+    rc = np.empty(nv, dtype=np.int64)  # each vertex's first row whose centre is not below it
+    lo, hi = h, 0
+    for v in range(nv):
+        rc[v] = math.ceil(vy[v] - 0.5)
+        lo = min(lo, rc[v])
+        hi = max(hi, rc[v])
+    r_lo = max(lo, 0)
+    r_hi = min(hi, h)
     n_rows = max(r_hi - r_lo, 0)
     start = np.zeros(n_rows + 1, dtype=np.int64)
     for e in range(nv):
-        f = (e + 1) % nv
-        for r in range(
-            max(math.ceil(min(vy[e], vy[f]) - 0.5), r_lo), min(math.ceil(max(vy[e], vy[f]) - 0.5), r_hi)
-        ):
+        f = e + 1 if e + 1 < nv else 0
+        for r in range(max(min(rc[e], rc[f]), r_lo), min(max(rc[e], rc[f]), r_hi)):
             start[r - r_lo + 1] += 1
     for i in range(n_rows):
         start[i + 1] += start[i]
     nxt = start[:-1].copy()
     xs = np.empty(start[n_rows])
     for e in range(nv):
-        f = (e + 1) % nv
-        ra = max(math.ceil(min(vy[e], vy[f]) - 0.5), r_lo)
-        rb = min(math.ceil(max(vy[e], vy[f]) - 0.5), r_hi)
+        f = e + 1 if e + 1 < nv else 0
+        ra = max(min(rc[e], rc[f]), r_lo)
+        rb = min(max(rc[e], rc[f]), r_hi)
         if rb > ra:
             slope = (vx[f] - vx[e]) / (vy[f] - vy[e])
             for r in range(ra, rb):
@@ -245,6 +267,7 @@ def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no co
     Pixel ``(0, 0)`` is ahead and to the left; pixels off the map show ``lut[MAPPED_UNKNOWN]``.
     """
     h, w = pooled.shape
+    fh, fw = float(h), float(w)
     s = out.shape[0]
     half = (s - 1) / 2.0
     unknown = lut[MAPPED_UNKNOWN]
@@ -255,8 +278,9 @@ def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no co
         x = px + ahead * cos_h - half * col_dx
         y = py + ahead * sin_h - half * col_dy
         for j in range(s):
-            c = math.floor(x)
-            r = math.floor(y)
-            out[i, j] = lut[pooled[r, c]] if 0 <= r < h and 0 <= c < w else unknown
+            if 0.0 <= x < fw and 0.0 <= y < fh:  # then truncation is the floor, and cheaper
+                out[i, j] = lut[pooled[int(y), int(x)]]
+            else:
+                out[i, j] = unknown
             x += col_dx
             y += col_dy

@@ -20,14 +20,12 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
     TRUTH_FREE,
-    TRUTH_OUTSIDE,
-    TRUTH_REACHABLE,
-    TRUTH_WALL,
     free_per_strip,
     integrate_scan,
+    map_targets,
     render_local,
 )
-from realistic_indoor.sim.raster import RASTER_FREE, RASTER_WALL
+from realistic_indoor.sim.raster import RASTER_FREE
 
 if TYPE_CHECKING:
     from realistic_indoor.sim.lidar import Scan
@@ -307,9 +305,4 @@ def beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:
 
 def _targets(world: World) -> np.ndarray:
     """What a beam may mark in each cell: wall, outside, free, or free and reachable."""
-    grid = world.raster.grid
-    out = np.full(grid.shape, TRUTH_OUTSIDE, dtype=np.uint8)
-    out[grid == RASTER_WALL] = TRUTH_WALL
-    out[grid == RASTER_FREE] = TRUTH_FREE
-    out[world.reachable] = TRUTH_REACHABLE
-    return out
+    return map_targets(world.raster.grid, world.reachable)

@@ -127,8 +127,9 @@ def rasterize(
             fall on cell boundaries.
 
     Returns:
-        The raster. Cost: about 20 ms for a 2,000 m2 office at 0.05 m (vectorised
-        scanline fill of the rooms and of one rectangle per wall segment).
+        The raster. Cost: about 3-4 ms for a 2,000 m2 office at 0.05 m once the building's
+        walls are known (a scanline fill of the rooms and of one rectangle per wall segment:
+        crossings with NumPy, spans summed by a compiled pass).
 
     Raises:
         ConfigError: If a size is out of range, the grid would exceed :data:`MAX_RASTER_CELLS`
@@ -153,10 +154,7 @@ def rasterize(
         quads = _wall_quads(walls, wall_thickness_m, resolution_m)
         rings += list(quads)
         weights += [_WALL_WEIGHT] * len(quads)
-    cover = _cover_count(rings, np.array(weights), (h, w), origin, resolution_m)
-    grid = np.full((h, w), RASTER_OUTSIDE, dtype=np.uint8)
-    grid[cover > 0] = RASTER_FREE
-    grid[cover >= _WALL_WEIGHT] = RASTER_WALL
+    grid = _cover_grid(rings, np.array(weights), (h, w), origin, resolution_m)
     grid.setflags(write=False)
     return OccupancyRaster(grid, float(resolution_m), (float(x0), float(y0)))
 
@@ -216,14 +214,18 @@ def _wall_quads(walls: np.ndarray, thickness_m: float, res: float) -> np.ndarray
     return np.stack([a2 - n * half, b2 - n * half, b2 + n * half, a2 + n * half], axis=1)
 
 
-def _cover_count(
+def _cover_grid(
     rings: list[np.ndarray], weights: np.ndarray, shape: tuple[int, int], origin: np.ndarray, res: float
 ) -> np.ndarray:
-    """Sum of the weights of the rings covering each cell's centre (vectorised scanline fill).
+    """The raster codes from the weights of the rings covering each cell's centre (scanline fill).
 
     Each ring is filled on its own (even-odd within the ring), so rings sharing an edge, like
-    adjacent rooms, do not cancel out. Returns an ``(H, W)`` int array.
+    adjacent rooms, do not cancel out. A cell whose cover reaches ``_WALL_WEIGHT`` is a wall,
+    one covered at all is free, others are outside. The crossings are found with NumPy, the
+    spans summed and classified by one compiled pass. Returns an ``(H, W)`` uint8 array.
     """
+    from realistic_indoor.sim._world_kernels import fill_cover  # numba: only when rasterizing
+
     h, w = shape
     sizes = np.array([len(r) for r in rings])
     first = np.cumsum(sizes) - sizes
@@ -246,10 +248,7 @@ def _cover_count(
     ring = ring_id[e]
     order = np.lexsort((x, rows, ring))
     x, rows, ring = x[order], rows[order], ring[order]
-    base = rows[0::2] * (w + 1)
-    span_weight = weights[ring[0::2]].astype(float)
-    n = h * (w + 1)
+    span_weight = weights[ring[0::2]].astype(np.int64)
     col_a = np.clip(np.ceil(x[0::2]), 0, w).astype(np.int64)
     col_b = np.clip(np.ceil(x[1::2]), 0, w).astype(np.int64)
-    diff = np.bincount(base + col_a, span_weight, n) - np.bincount(base + col_b, span_weight, n)
-    return np.cumsum(diff.astype(np.int32).reshape(h, w + 1), axis=1)[:, :w]
+    return fill_cover(np.ascontiguousarray(rows[0::2]), col_a, col_b, span_weight, h, w, _WALL_WEIGHT)

@@ -9,6 +9,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim._world_kernels import skip_and_clearance
 from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, OccupancyRaster
 
@@ -22,6 +23,12 @@ sqrt(2)/2 of its centre, and an obstacle cell reaches sqrt(2)/2 beyond its own c
 _BOUNDARY_NUDGE = 1e-6
 """How far past a cell boundary (cells) the exact walk steps, so it lands in the next cell."""
 _BIG = 1e30
+_AXIS = 1e-9
+"""A direction component below this counts as 0. A ray that starts on a cell boundary (an
+entrance's centre line at a round coordinate) and runs along it with a component of 1e-16,
+as cos(pi / 2) gives, moves its coordinate by less than the float spacing: the exact walk
+stepped 1e-6 cells at a time and one scan took 20 ms. Over the longest ray such a component
+moves it by less than 1e-5 cells."""
 
 
 class RayHits(NamedTuple):
@@ -60,12 +67,32 @@ class Raycaster:
     """
 
     def __init__(self, raster: OccupancyRaster, distance_cells: np.ndarray | None = None) -> None:
-        self.raster = raster
         if distance_cells is None:
             distance_cells = free_distance_cells(raster)
-        self._skip = _skip_field(raster.grid, distance_cells)
+        self._set(raster, _skip_field(raster.grid, distance_cells)[0])
+
+    def _set(self, raster: OccupancyRaster, skip: np.ndarray) -> None:
+        self.raster = raster
+        self._skip = skip
         self._scale = 1.0 / raster.resolution_m
         self._x0, self._y0 = raster.origin
+
+    @classmethod
+    def with_clearance(cls, raster: OccupancyRaster) -> tuple[Raycaster, np.ndarray]:
+        """A raycaster and the clearance of every cell, from one distance transform.
+
+        Args:
+            raster: The building's occupancy raster.
+
+        Returns:
+            The raycaster, and ``(H, W)`` float32 distances (m) from each free cell to the
+            nearest wall or outside cell's edge (its centre-to-centre distance less half a
+            cell), 0 elsewhere: :attr:`World.clearance_m`.
+        """
+        skip, clearance = _skip_field(raster.grid, free_distance_cells(raster), raster.resolution_m)
+        raycaster = cls.__new__(cls)
+        raycaster._set(raster, skip)
+        return raycaster, clearance
 
     @property
     def nbytes(self) -> int:
@@ -168,35 +195,46 @@ def free_distance_cells(raster: OccupancyRaster) -> np.ndarray:
     return distance_field(raster.grid != RASTER_FREE)
 
 
-def _skip_field(grid: np.ndarray, dist: np.ndarray) -> np.ndarray:
+def _skip_field(
+    grid: np.ndarray, dist: np.ndarray, resolution_m: float = 1.0
+) -> tuple[np.ndarray, np.ndarray]:
     """Safe ray-marching step per cell, in whole cells (uint8), or the code of an obstacle.
 
     A free cell holds how far a ray starting anywhere in it may jump without entering an
     obstacle cell: its distance to the nearest obstacle cell minus :data:`_SAFETY`, rounded
     down (at most 253 cells). One byte per cell keeps the field in cache, and one read per
     step tells the marching loop both what a cell is and how far it may jump.
+
+    Returns:
+        The skip field (read-only), and the clearance the same pass computes: ``dist`` less
+        half a cell, at least 0, times ``resolution_m`` (float32).
     """
-    skip = np.clip(np.floor(dist - _SAFETY), 0, _SKIP_WALL - 1).astype(np.uint8)
-    skip[grid == RASTER_WALL] = _SKIP_WALL
-    skip[grid == RASTER_OUTSIDE] = _SKIP_OUTSIDE
+    skip, clearance = skip_and_clearance(
+        grid, dist, np.float32(_SAFETY), _SKIP_WALL, _SKIP_OUTSIDE, np.float32(0.5), np.float32(resolution_m)
+    )
     skip.setflags(write=False)
-    return skip
+    return skip, clearance
 
 
 @njit(cache=True, nogil=True, fastmath=True, inline="always")
 def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
     """March one ray (cell units); return ``(t, kind)`` at the first non-free cell."""
     h, w = skip.shape
+    fh, fw = float(h), float(w)
+    if abs(dx) < _AXIS:  # along an axis: x would stay on a cell boundary and the walk creep
+        dx = 0.0
+    if abs(dy) < _AXIS:
+        dy = 0.0
     inv_dx = 1.0 / dx if dx != 0.0 else _BIG
     inv_dy = 1.0 / dy if dy != 0.0 else _BIG
     t = 0.0
     while t < t_max:
         x = px + t * dx
         y = py + t * dy
-        c = math.floor(x)
-        r = math.floor(y)
-        if r < 0 or r >= h or c < 0 or c >= w:
+        if x < 0.0 or y < 0.0 or x >= fw or y >= fh:
             return t, RASTER_OUTSIDE
+        c = int(x)  # the floor: x >= 0 here, and truncation is cheaper
+        r = int(y)
         s = skip[r, c]
         if s >= _SKIP_WALL:
             return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE

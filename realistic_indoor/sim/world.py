@@ -6,21 +6,20 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import ndimage
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim._world_kernels import reachable_from
 from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
     DEFAULT_RESOLUTION_M,
     DEFAULT_WALL_THICKNESS_M,
-    RASTER_FREE,
     OccupancyRaster,
     rasterize,
 )
-from realistic_indoor.sim.raycast import Raycaster, free_distance_cells
+from realistic_indoor.sim.raycast import Raycaster
 
 __all__ = ["World", "WorldConfig"]
 
@@ -89,12 +88,7 @@ class World:
         self.config = config or WorldConfig()
         c = self.config
         self.raster: OccupancyRaster = rasterize(building, c.resolution_m, c.wall_thickness_m, c.margin_m)
-        dist = free_distance_cells(self.raster)
-        self.raycaster = Raycaster(self.raster, dist)
-        dist -= 0.5  # from a cell's centre to the obstacle cell's edge
-        np.maximum(dist, 0.0, out=dist)
-        dist *= c.resolution_m
-        self.clearance_m = dist
+        self.raycaster, self.clearance_m = Raycaster.with_clearance(self.raster)
         self.start_pose = self._checked_start(start_pose) if start_pose else self.default_start_pose()
         self.reachable = self._reachable_from(self.start_pose)
         self.reachable_area_m2 = float(np.count_nonzero(self.reachable)) * self.raster.cell_area_m2
@@ -196,9 +190,8 @@ class World:
         return (x, y, theta)
 
     def _reachable_from(self, pose: Pose) -> np.ndarray:
-        labels, _ = ndimage.label(self.raster.grid == RASTER_FREE)
-        row, col = self.raster.world_to_cell(pose[:2])
-        return labels == labels[row, col]
+        row, col = self.raster.world_to_cell(pose[:2])  # free: the start is clear of walls
+        return reachable_from(self.raster.grid, int(row), int(col))
 
 
 def _point(xy: np.ndarray):

@@ -1,0 +1,60 @@
+"""The compiled passes of a world's build against what they replace: scipy and NumPy expressions."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+from realistic_indoor.sim._world_kernels import reachable_from, skip_and_clearance
+from realistic_indoor.sim.fields import distance_field
+from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
+from realistic_indoor.sim.raycast import _SAFETY, _SKIP_OUTSIDE, _SKIP_WALL
+
+
+def _random_grid(seed: int, shape=(60, 80), free_share=0.62) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    codes = rng.choice([RASTER_WALL, RASTER_OUTSIDE], size=shape).astype(np.uint8)
+    codes[rng.random(shape) < free_share] = RASTER_FREE
+    return codes
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_reachable_from__is_the_start_cells_4_connected_component(seed):
+    grid = _random_grid(seed)  # near the percolation threshold: many winding components
+    labels, n = ndimage.label(grid == RASTER_FREE)  # 4-connected by default
+    sizes = np.bincount(labels.ravel())[1:]
+    start = np.argwhere(labels == 1 + int(np.argmax(sizes)))[0]
+    got = reachable_from(grid, int(start[0]), int(start[1]))
+    assert np.array_equal(got, labels == labels[tuple(start)])
+    assert n > 10 and got.sum() > 100
+
+
+def test_reachable_from__a_serpentine_corridor_is_followed_to_its_end_and_no_further():
+    grid = np.full((41, 43), RASTER_WALL, dtype=np.uint8)
+    for r in range(1, 40, 2):  # one-cell corridors joined at alternate ends
+        grid[r, 1:41] = RASTER_FREE
+        if r + 2 < 40:
+            grid[r + 1, 40 if r % 4 == 1 else 1] = RASTER_FREE
+    grid[5:9, 42] = RASTER_FREE  # a pocket behind the wall
+    got = reachable_from(grid, 1, 1)
+    want = grid == RASTER_FREE
+    want[5:9, 42] = False
+    assert np.array_equal(got, want)
+    assert got[39, 1 if 39 % 4 == 3 else 40]  # the far end of the last corridor
+
+
+@pytest.mark.parametrize("res", [0.05, 0.1, 0.037])
+def test_skip_and_clearance__equal_the_numpy_expressions(res):
+    grid = _random_grid(3, (50, 70), free_share=0.9)
+    dist = distance_field(grid != RASTER_FREE)
+    skip, clearance = skip_and_clearance(
+        grid, dist, np.float32(_SAFETY), _SKIP_WALL, _SKIP_OUTSIDE, np.float32(0.5), np.float32(res)
+    )
+    want_skip = np.clip(np.floor(dist - _SAFETY), 0, _SKIP_WALL - 1).astype(np.uint8)
+    want_skip[grid == RASTER_WALL] = _SKIP_WALL
+    want_skip[grid == RASTER_OUTSIDE] = _SKIP_OUTSIDE
+    want_clearance = np.maximum(dist - np.float32(0.5), np.float32(0.0)) * np.float32(res)
+    assert np.array_equal(skip, want_skip)
+    assert clearance.dtype == np.float32 and np.array_equal(clearance, want_clearance)
+    assert want_skip[grid == RASTER_FREE].max() > 0  # the field has jumps to check

@@ -56,7 +56,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``train`` (shared with ``experiments/train_ppo.py``)."""
-    from realistic_indoor.agents.rl.config import PPO_PRESETS
+    from realistic_indoor.agents.rl.config import PPO_PRESETS, VEC_ENVS
 
     p.add_argument(
         "--preset",
@@ -74,6 +74,14 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--timesteps", type=int, help="training steps over all environments (default: the preset's)"
     )
     p.add_argument("--seed", type=int, default=0, help="seed of the policy and the environments (default 0)")
+    p.add_argument(
+        "--vec-env",
+        choices=VEC_ENVS,
+        help="how the training environments run: batched (the ids' native vector environments, "
+        "one compiled step each, in this process), subproc (a process each) or dummy (in turn, in "
+        "this process); default: the preset's",
+    )
+    p.add_argument("--n-envs", type=int, help="environments trained on in parallel (default: the preset's)")
     p.add_argument(
         "--out",
         help="model file to write (.zip; its .json goes beside it); default: a new runs/ppo_ENVS_PRESET.zip",
@@ -124,6 +132,7 @@ def _check_numbers(args: argparse.Namespace) -> None:
     """Refuse counts out of range, naming the option."""
     for option, value, minimum in (
         ("--timesteps", args.timesteps, 1),
+        ("--n-envs", args.n_envs, 1),
         ("--seed", args.seed, 0),
         ("--eval-episodes", args.eval_episodes, 0),
         ("--eval-max-steps", args.eval_max_steps, 1),
@@ -139,6 +148,10 @@ def _config(args: argparse.Namespace, env_ids: tuple[str, ...]):
     changes = {"env_ids": env_ids, "seed": args.seed}
     if args.timesteps is not None:
         changes["total_timesteps"] = args.timesteps
+    if args.vec_env is not None:
+        changes["vec_env"] = args.vec_env
+    if args.n_envs is not None:
+        changes["n_envs"] = args.n_envs
     return ppo_preset(args.preset, **changes)
 
 

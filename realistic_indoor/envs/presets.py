@@ -10,8 +10,11 @@ _ENTRY_POINTS = {
     "Explore": "realistic_indoor.envs.explore:ExploreEnv",
     "Search": "realistic_indoor.envs.search:SearchEnv",
 }
-_VECTOR_ENTRY_POINTS = {"Explore": "realistic_indoor.envs.vector:BatchedExploreEnv", "Search": None}
-"""The native vector environment of each task (``gym.make_vec``); ``None``: Gymnasium's own."""
+_VECTOR_ENTRY_POINTS = {
+    "Explore": "realistic_indoor.envs.vector:BatchedExploreEnv",
+    "Search": "realistic_indoor.envs.vector_search:BatchedSearchEnv",
+}
+"""The native vector environment of each task (``gym.make_vec``)."""
 _MAX_STEPS = {
     "Explore": {"office": 6000, "school": 6000, "house": 1000, "random": 6000},
     "Search": {"office": 12000, "school": 15000, "house": 1000, "random": 12000},
@@ -39,7 +42,8 @@ class EnvPreset(NamedTuple):
             to it, so they override the preset's.)
         max_episode_steps: The step limit (also ``kwargs["max_steps"]``).
         vector_entry_point: ``"module:Class"`` of the native vector environment that
-            ``gym.make_vec`` returns, or ``None`` (Gymnasium's sync vector of single envs).
+            ``gym.make_vec`` returns (every registered id has one), or ``None`` (Gymnasium's
+            sync vector of single envs).
     """
 
     env_id: str

@@ -37,11 +37,14 @@ class VictimObservation:
 
     def observe(self, sim: Simulation) -> np.ndarray:
         """The victims in view (a new array)."""
-        victims = _victims_of(sim)
+        return self.encode(sim.robot.pose, _victims_of(sim))
+
+    def encode(self, pose: tuple[float, float, float], victims: Victims) -> np.ndarray:
+        """The observation of ``victims`` (their latest look) from ``pose`` (m, m, rad); a new array."""
         out = np.zeros((len(victims.xy), 3), dtype=np.float32)
         seen = victims.in_view
         if seen.any():
-            ranges, bearings = relative_polar(sim.robot.pose, victims.xy[seen])
+            ranges, bearings = relative_polar(pose, victims.xy[seen])
             order = np.argsort(ranges, kind="stable")
             rows = np.stack([ranges[order], bearings[order]], axis=1) * self._scale
             out[: len(order), 0] = 1.0

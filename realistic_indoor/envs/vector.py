@@ -21,7 +21,7 @@ from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.errors import ActionError, ConfigError
-from realistic_indoor.sim.batch import N_TERMS, RESET, SKIP, STEP, Batch, step_batch
+from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
 from realistic_indoor.sim.lidar import beam_offsets
 from realistic_indoor.sim.mapping import beam_table
@@ -69,6 +69,10 @@ class BatchedExploreEnv(VectorEnv):
     """
 
     metadata = {"render_modes": [], "autoreset_mode": AutoresetMode.NEXT_STEP}
+    task = "explore"
+    """The task whose configuration fields apply (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
+    term_names: tuple[str, ...] = ("new_area", "collision", "time")
+    """The reward terms, in the order the single environment sums them."""
 
     def __init__(
         self,
@@ -83,7 +87,7 @@ class BatchedExploreEnv(VectorEnv):
         if max_episode_steps is not None:
             overrides = {"max_steps": max_episode_steps, **overrides}
         self.config = base_config(config, preset).replace(**overrides)
-        require_task_fields(self.config, "explore", overrides)
+        require_task_fields(self.config, self.task, overrides)
         if self.config.robot.physics != "compiled":
             raise ConfigError(
                 f"the native vector env runs the compiled physics only, got robot physics "
@@ -103,7 +107,7 @@ class BatchedExploreEnv(VectorEnv):
         )
         self.single_action_space = self._actions.space
         self.action_space = batch_space(self.single_action_space, num_envs)
-        parts = explore_observations(self.config)
+        parts = self._observation_parts()
         self.single_observation_space = gym.spaces.Dict({k: p.space for k, p in parts.items()})
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self._init_arrays()
@@ -122,13 +126,13 @@ class BatchedExploreEnv(VectorEnv):
         self._scan_m = np.zeros((n, c.lidar.n_beams), dtype=np.float32)
         s = c.local_map.size_px
         self._local_map = np.zeros((n, 1, s, s), dtype=np.uint8)
-        self._terms = np.zeros((n, N_TERMS))
+        self._terms = np.zeros((n, len(self.term_names)))
         self._motion = np.zeros(n)
         self._steps = np.zeros(n, dtype=np.int64)
         self._path = np.zeros(n)
         self._collisions = np.zeros(n, dtype=np.int64)
         self._autoreset = np.zeros(n, dtype=bool)
-        self._weights = np.array([c.rewards.new_area, c.rewards.collision, c.rewards.time])
+        self._weights = np.array([getattr(c.rewards, name) for name in self.term_names])
         self._rngs: list[np.random.Generator] = []
 
     # -- the Gymnasium API ----------------------------------------------------------------------
@@ -174,14 +178,16 @@ class BatchedExploreEnv(VectorEnv):
             self._reset_one(int(k))
         self._run()
         stepped = self._mode == STEP
+        self._sense(stepped)
         self._steps += stepped
         self._path += self._motion * stepped
         self._collisions += (self._terms[:, 1] > 0) & stepped
         weighted = self._terms * self._weights
-        total = weighted[:, 0] + weighted[:, 1] + weighted[:, 2]  # the single env's order of sums
+        total = weighted[:, 0]
+        for j in range(1, weighted.shape[1]):  # the single env's order of sums
+            total = total + weighted[:, j]
         reward = np.where(stepped, total, 0.0)
-        coverage = self._coverage()
-        terminated = stepped & (coverage >= self.config.coverage_target)
+        terminated = stepped & self._done()
         truncated = stepped & ~terminated & (self._steps >= self.config.max_steps)
         self._autoreset = terminated | truncated
         info = self._info(rewards=True)
@@ -228,6 +234,18 @@ class BatchedExploreEnv(VectorEnv):
         """Memory held by the batch's worlds, maps and arrays (bytes)."""
         return self._batch.nbytes
 
+    # -- what a task adds (search: victims) --------------------------------------------------------
+    def _observation_parts(self) -> dict[str, Any]:
+        """The parts of one sub-environment's observation (as the single environment's)."""
+        return explore_observations(self.config)
+
+    def _sense(self, stepped: np.ndarray) -> None:
+        """After the compiled step: what the task senses in Python (nothing for exploration)."""
+
+    def _done(self) -> np.ndarray:
+        """``(num_envs,)`` whether each sub-environment's task is complete."""
+        return self._coverage() >= self.config.coverage_target
+
     # -- internals -----------------------------------------------------------------------------------
     def _seeds(self, seed: int | list[int | None] | None) -> list[int | None] | None:
         if seed is None:
@@ -262,15 +280,20 @@ class BatchedExploreEnv(VectorEnv):
         for k in np.flatnonzero(self._mode == STEP):
             self._noise_for(int(k))
         b = self._batch
+        if self.num_envs < 2 * ROBOTS_PER_THREAD or numba.config.NUMBA_NUM_THREADS < 2:
+            # one thread: numba's thread pool is not even started (get_num_threads would start
+            # it), so its OpenMP threads cannot slow torch down in the same process
+            self._step_batch(b, step_batch_serial)
+            return
         outer = numba.get_num_threads()
         numba.set_num_threads(max(1, min(outer, self.num_envs // ROBOTS_PER_THREAD)))
         try:
-            self._step_batch(b)
+            self._step_batch(b, step_batch)
         finally:
             numba.set_num_threads(outer)
 
-    def _step_batch(self, b: Batch) -> None:
-        step_batch(
+    def _step_batch(self, b: Batch, kernel: Any) -> None:
+        kernel(
             self._mode, self._commands, b.phys, b.robot_building, b.building_meta, b.skips, b.targets,
             b.segments, b.seg_start, b.seg_items, b.seg_origin, b.grids, b.pooled, b.todo, b.observed,
             self._params, self._cos, self._sin, self._noise, self._lidar, self._local,
@@ -336,8 +359,6 @@ class BatchedExploreEnv(VectorEnv):
             info[key] = value
             info[f"_{key}"] = mask
         if rewards:
-            info["rewards"] = {
-                name: self._terms[:, j].copy() for j, name in enumerate(("new_area", "collision", "time"))
-            }
+            info["rewards"] = {name: self._terms[:, j].copy() for j, name in enumerate(self.term_names)}
             info["_rewards"] = mask
         return info

@@ -28,7 +28,7 @@ from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNO
 from realistic_indoor.sim.raycast import _cast_fan
 from realistic_indoor.sim.world import World
 
-__all__ = ["LUT", "N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch"]
+__all__ = ["LUT", "N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch", "step_batch_serial"]
 
 SKIP, STEP, RESET = 0, 1, 2
 """What :func:`step_batch` does to a robot: nothing, a control step, or a first scan after a reset."""
@@ -126,7 +126,62 @@ LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 
 
 @njit(cache=True, nogil=True, parallel=True)
-def step_batch(
+def step_batch(*args):  # pragma: no cover - compiled
+    """Advance every robot whose ``mode`` is :data:`STEP`; scan and map those at :data:`RESET`.
+
+    Robots run in parallel (numba's threads, as many as ``numba.set_num_threads`` allows);
+    :func:`step_batch_serial` is the same step on the calling thread only.
+
+    Args:
+        *args: The state and the outputs of the robots, in the order below (the arguments of
+            ``_step_robot`` after the robot's index).
+
+    In order:
+        mode: ``(n,)`` int64 :data:`SKIP`, :data:`STEP` or :data:`RESET` per robot.
+        commands: ``(n, 2)`` float64 ``(v m/s, w rad/s)``.
+        phys: ``(n, STATE_SIZE)`` physics state, updated.
+        robot_building: ``(n,)`` building slot of each robot.
+        meta: ``(n_buildings, 8)`` :attr:`Batch.building_meta`.
+        skips: Per building, the raycaster's skip field.
+        targets: Per building, what a beam may mark in each cell (the robot map's targets).
+        segments: Per building, ``(S, 4)`` wall segments (m).
+        seg_start: Per building, the wall grid's bucket starts.
+        seg_items: Per building, the wall grid's segment indices.
+        seg_origin: Per building, the wall grid's origin, bucket side and size.
+        grids: Per robot, its map (cell states), updated.
+        pooled: Per robot, its pooled map, updated.
+        todo: Per robot, unknown free cells per row strip, updated.
+        observed: ``(n,)`` reachable cells observed, updated.
+        params: The robot's constants (:func:`~realistic_indoor.sim.disc_physics.drive_params`).
+        cos_off: ``(n_beams,)`` cosines of the beam offsets.
+        sin_off: ``(n_beams,)`` sines of the beam offsets.
+        noise: ``(n, n_beams)`` standard normal draws for the range noise.
+        lidar: ``(max range m, noise std m, closed fan 0/1)``.
+        local: ``(pool cells, pixel size in pooled cells)``.
+        out_scan: ``(n, n_beams)`` float32 readings (m), written.
+        out_local: ``(n, 1, S, S)`` uint8 local views, written.
+        out_terms: ``(n, T)`` float64 reward terms, ``T >= 3``: columns 0-2 written (new area m2,
+            collision, time); further ones are the caller's (search: victims).
+        out_motion: ``(n,)`` float64 distance driven (m), written.
+    """
+    for k in prange(args[0].shape[0]):
+        _step_robot(np.int64(k), *args)  # prange counts in uint64; lists index with a signed int
+
+
+@njit(cache=True, nogil=True)
+def step_batch_serial(*args):  # pragma: no cover - compiled
+    """:func:`step_batch` on the calling thread: no thread pool is started or woken.
+
+    Where a step is short (a few robots), waking numba's threads costs more than it saves, and
+    their OpenMP threads spinning afterwards slow other libraries of the process (torch) down.
+    """
+    for i in range(args[0].shape[0]):
+        _step_robot(i, *args)
+
+
+@njit(cache=True, nogil=True)
+def _step_robot(
+    i,
     mode,
     commands,
     phys,
@@ -153,86 +208,55 @@ def step_batch(
     out_terms,
     out_motion,
 ):  # pragma: no cover - compiled
-    """Advance every robot whose ``mode`` is :data:`STEP`; scan and map those at :data:`RESET`.
-
-    Args:
-        mode: ``(n,)`` int64 :data:`SKIP`, :data:`STEP` or :data:`RESET` per robot.
-        commands: ``(n, 2)`` float64 ``(v m/s, w rad/s)``.
-        phys: ``(n, STATE_SIZE)`` physics state, updated.
-        robot_building: ``(n,)`` building slot of each robot.
-        meta: ``(n_buildings, 8)`` :attr:`Batch.building_meta`.
-        skips: Per building, the raycaster's skip field.
-        targets: Per building, what a beam may mark in each cell (the robot map's targets).
-        segments: Per building, ``(S, 4)`` wall segments (m).
-        seg_start: Per building, the wall grid's bucket starts.
-        seg_items: Per building, the wall grid's segment indices.
-        seg_origin: Per building, the wall grid's origin, bucket side and size.
-        grids: Per robot, its map (cell states), updated.
-        pooled: Per robot, its pooled map, updated.
-        todo: Per robot, unknown free cells per row strip, updated.
-        observed: ``(n,)`` reachable cells observed, updated.
-        params: The robot's constants (:func:`~realistic_indoor.sim.disc_physics.drive_params`).
-        cos_off: ``(n_beams,)`` cosines of the beam offsets.
-        sin_off: ``(n_beams,)`` sines of the beam offsets.
-        noise: ``(n, n_beams)`` standard normal draws for the range noise.
-        lidar: ``(max range m, noise std m, closed fan 0/1)``.
-        local: ``(pool cells, pixel size in pooled cells)``.
-        out_scan: ``(n, n_beams)`` float32 readings (m), written.
-        out_local: ``(n, 1, S, S)`` uint8 local views, written.
-        out_terms: ``(n, 3)`` float64 reward terms (new area m2, collision, time), written.
-        out_motion: ``(n,)`` float64 distance driven (m), written.
-    """
-    n = mode.shape[0]
+    """Robot ``i``'s part of :func:`step_batch`."""
     n_beams = cos_off.shape[0]
     max_range, noise_std, closed = lidar[0], lidar[1], lidar[2] > 0.5
     pool, pixel = int(local[0]), local[1]
-    for k in prange(n):
-        i = np.int64(k)  # prange counts in uint64; lists index with a signed int
-        if mode[i] == SKIP:
-            continue
-        b = robot_building[i]
-        collided = False
-        distance = 0.0
-        if mode[i] == STEP:
-            collided, distance = drive(
-                phys[i],
-                commands[i, 0],
-                commands[i, 1],
-                segments[b],
-                seg_start[b],
-                seg_items[b],
-                seg_origin[b],
-                params,
-            )
-        x0, y0, res = meta[b, 0], meta[b, 1], meta[b, 2]
-        px = (phys[i, X] - x0) / res
-        py = (phys[i, Y] - y0) / res
-        ch = math.cos(phys[i, THETA])
-        sh = math.sin(phys[i, THETA])
-        true_m = np.empty(n_beams, dtype=np.float32)
-        kind = np.empty(n_beams, dtype=np.uint8)
-        _cast_fan(skips[b], px, py, ch, sh, cos_off, sin_off, max_range / res, res, true_m, kind)
-        _readings(true_m, kind, noise[i], noise_std, max_range, out_scan[i])
-        new = integrate_scan(
-            grids[i],
-            pooled[i],
-            pool,
-            targets[b],
-            todo[i],
-            px,
-            py,
-            ch,
-            sh,
-            cos_off,
-            sin_off,
-            true_m,
-            kind,
-            1.0 / res,
-            closed,
+    if mode[i] == SKIP:
+        return
+    b = robot_building[i]
+    collided = False
+    distance = 0.0
+    if mode[i] == STEP:
+        collided, distance = drive(
+            phys[i],
+            commands[i, 0],
+            commands[i, 1],
+            segments[b],
+            seg_start[b],
+            seg_items[b],
+            seg_origin[b],
+            params,
         )
-        observed[i] += new
-        render_local(pooled[i], LUT, px / pool, py / pool, ch, sh, pixel, out_local[i, 0])
-        out_terms[i, 0] = new * (res * res)  # as RobotMap.update: cells times the cell area
-        out_terms[i, 1] = 1.0 if collided else 0.0
-        out_terms[i, 2] = 1.0
-        out_motion[i] = distance
+    x0, y0, res = meta[b, 0], meta[b, 1], meta[b, 2]
+    px = (phys[i, X] - x0) / res
+    py = (phys[i, Y] - y0) / res
+    ch = math.cos(phys[i, THETA])
+    sh = math.sin(phys[i, THETA])
+    true_m = np.empty(n_beams, dtype=np.float32)
+    kind = np.empty(n_beams, dtype=np.uint8)
+    _cast_fan(skips[b], px, py, ch, sh, cos_off, sin_off, max_range / res, res, true_m, kind)
+    _readings(true_m, kind, noise[i], noise_std, max_range, out_scan[i])
+    new = integrate_scan(
+        grids[i],
+        pooled[i],
+        pool,
+        targets[b],
+        todo[i],
+        px,
+        py,
+        ch,
+        sh,
+        cos_off,
+        sin_off,
+        true_m,
+        kind,
+        1.0 / res,
+        closed,
+    )
+    observed[i] += new
+    render_local(pooled[i], LUT, px / pool, py / pool, ch, sh, pixel, out_local[i, 0])
+    out_terms[i, 0] = new * (res * res)  # as RobotMap.update: cells times the cell area
+    out_terms[i, 1] = 1.0 if collided else 0.0
+    out_terms[i, 2] = 1.0
+    out_motion[i] = distance

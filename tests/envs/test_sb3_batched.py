@@ -71,6 +71,18 @@ def test_make_vec_env__batched_mixes_the_ids_in_one_vec_env():
     venv.close()
 
 
+def test_make_vec_env__search_ids_train_batched_with_the_victim_sensor():
+    config = ppo_preset("smoke", env_ids=("HouseSearch-v0",), vec_env="batched", n_envs=2, max_steps=5)
+    venv = make_vec_env(config)
+    assert isinstance(venv, BatchedVecEnv)
+    obs = venv.reset()
+    assert obs["victims"].shape == (2, 9)
+    for _ in range(5):
+        obs, _, done, infos = venv.step(np.array([venv.action_space.sample() for _ in range(2)]))
+    assert done.all() and all(info["episode"]["l"] == 5 for info in infos)
+    venv.close()
+
+
 def test_ppo__learns_a_few_hundred_steps_on_the_batched_vec_env(request):
     import torch
     from stable_baselines3 import PPO

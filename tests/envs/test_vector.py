@@ -11,9 +11,10 @@ from gymnasium.vector import AutoresetMode
 
 from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.vector import INFO_KEYS, BatchedExploreEnv
+from realistic_indoor.envs.vector_search import BatchedSearchEnv
 from realistic_indoor.errors import ActionError, ConfigError
 
-EXPLORE_IDS = sorted(k for k, p in PRESETS.items() if p.vector_entry_point)
+VECTOR_IDS = sorted(k for k, p in PRESETS.items() if p.vector_entry_point)
 POSE_TOLERANCE_M = 0.05
 """The compiled physics' tolerance against pymunk (tests/sim/test_disc_physics.py)."""
 
@@ -31,7 +32,11 @@ def _rollout(envs, seed: int, n_steps: int) -> list:
     return out
 
 
-@pytest.mark.parametrize("env_id", EXPLORE_IDS)
+def test_every_registered_id_has_a_native_vector_env():
+    assert sorted(PRESETS) == VECTOR_IDS
+
+
+@pytest.mark.parametrize("env_id", VECTOR_IDS)
 def test_make_vec__returns_the_native_vector_env_with_batched_spaces(env_id):
     envs = _make(env_id)
     assert isinstance(envs, BatchedExploreEnv)
@@ -46,7 +51,11 @@ def test_make_vec__returns_the_native_vector_env_with_batched_spaces(env_id):
     assert terminated.dtype == truncated.dtype == np.bool_
     for key in INFO_KEYS:
         assert info[key].shape == (3,) and info[f"_{key}"].all()
-    assert set(info["rewards"]) == {"new_area", "collision", "time"}
+    search = env_id.endswith("Search-v0")
+    assert set(info["rewards"]) == {"new_area", "collision", "time"} | ({"victim"} if search else set())
+    if search:
+        assert isinstance(envs, BatchedSearchEnv) and obs["victims"].shape == (3, 9)
+        assert (info["victims_total"] == 3).all()
     envs.close()
 
 
@@ -57,13 +66,23 @@ def test_vector_env__same_seed_gives_the_same_rollout_and_sub_envs_differ():
     assert not np.array_equal(scans[0], scans[1])
 
 
-def test_vector_env__sub_env_k_is_the_single_env_seeded_with_seed_plus_k():
-    envs = _make(n=2)
-    obs, _ = envs.reset(seed=10)
-    single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"])
-    first, _ = single.reset(seed=11)
+@pytest.mark.parametrize(
+    ("env_id", "extra"),
+    [
+        ("OfficeExplore-v0", {}),
+        # many victims and a longer-range sensor: two are found during the steps compared
+        ("HouseSearch-v0", {"victims": {"n_victims": 10, "sensor_range_m": 6.0}}),
+    ],
+)
+def test_vector_env__sub_env_k_is_the_single_env_seeded_with_seed_plus_k(env_id, extra):
+    area = TEST_AREAS_M2[PRESETS[env_id].building_type]
+    envs = gym.make_vec(env_id, num_envs=2, area_m2=area, **extra)
+    obs, _ = envs.reset(seed=12)
+    single = gym.make(env_id, area_m2=area, **extra)
+    first, _ = single.reset(seed=13)
     assert data_equivalence(first, {k: v[1] for k, v in obs.items()}, exact=True)
     rng = np.random.default_rng(0)
+    found = 0
     for _ in range(150):  # one physics, one set of kernels: the same episode, exactly
         actions = rng.uniform(-1, 1, (2, 2)).astype(np.float32)
         obs, reward, terminated, truncated, info = envs.step(actions)
@@ -72,6 +91,13 @@ def test_vector_env__sub_env_k_is_the_single_env_seeded_with_seed_plus_k():
         assert (one_reward, one_terminated, one_truncated) == (reward[1], terminated[1], truncated[1])
         assert one_info["coverage"] == info["coverage"][1]
         assert one_info["path_length_m"] == pytest.approx(info["path_length_m"][1], abs=1e-9)
+        assert one_info["rewards"] == {k: v[1] for k, v in info["rewards"].items()}
+        if "victims_found" in one_info:
+            assert one_info["victims_found"] == info["victims_found"][1]
+            found = one_info["victims_found"]
+        if one_terminated or one_truncated:
+            break
+    assert found > 0 or "Search" not in env_id
 
 
 def test_vector_env__follows_the_pymunk_reference_within_the_physics_tolerance():
@@ -150,3 +176,18 @@ def test_vector_env__works_with_gymnasium_vector_wrappers():
     for _ in range(3):
         *_, info = envs.step(envs.action_space.sample())
     assert info["_episode"].all() and (info["episode"]["l"] == 3).all()
+
+
+def test_vector_env__many_robots_step_on_numba_threads_and_match_the_single_env():
+    n = 32  # from 32 robots on, the step runs on numba's threads (when there are two or more)
+    envs = _make(n=n)
+    envs.reset(seed=40)
+    single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"])
+    single.reset(seed=40 + n - 1)
+    rng = np.random.default_rng(2)
+    for _ in range(5):
+        actions = rng.uniform(-1, 1, (n, 2)).astype(np.float32)
+        obs, reward, *_ = envs.step(actions)
+        one, one_reward, *_ = single.step(actions[-1])
+        assert data_equivalence(one, {k: v[-1] for k, v in obs.items()}, exact=True)
+        assert one_reward == reward[-1]

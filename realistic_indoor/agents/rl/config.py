@@ -13,6 +13,7 @@ __all__ = [
     "ENV_SETS",
     "PPO_EVAL_PRESETS",
     "PPO_PRESETS",
+    "VEC_ENVS",
     "EvalPlan",
     "PPOConfig",
     "env_ids_of",
@@ -23,6 +24,8 @@ REALISTIC_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
 RANDOM_IDS = ("RandomExplore-v0",)
 ENV_SETS: dict[str, tuple[str, ...]] = {"realistic": REALISTIC_IDS, "random": RANDOM_IDS}
 """Named sets of training ids: ``realistic`` (offices, schools, houses) and ``random`` (the baseline)."""
+VEC_ENVS = ("batched", "subproc", "dummy")
+"""How training environments run: :attr:`PPOConfig.vec_env`."""
 TRAINING_AREAS_M2: dict[str, float] = {"office": 600.0, "school": 900.0, "house": 150.0, "random": 600.0}
 """Floor area per building type while training (m2): smaller than the generators' defaults, so
 that training episodes see whole buildings."""
@@ -45,13 +48,12 @@ class PPOConfig:
         obs_keys: Observation keys the policy reads (``pose`` is left out by default: absolute
             odometry does not generalise across buildings); ``victims`` is added for search ids.
         n_envs: Environments run in parallel.
-        vec_env: ``"subproc"`` (one process each, the default), ``"dummy"`` (all in this
-            process) or ``"batched"`` (the ids' native vector environments: all sub-environments
-            of an id stepped by one compiled call, in this process; the search ids fall back to
-            ``"dummy"``). At the default
-            4 environments over three ids, ``"batched"`` measured 7,500-7,700 env-steps/s
-            against 9,500 for ``"dummy"`` (loaded 2-core machine); it pays off with many
-            environments per id.
+        vec_env: ``"batched"`` (the default: the ids' native vector environments, all
+            sub-environments of an id stepped by one compiled call, in this process),
+            ``"subproc"`` (one process each) or ``"dummy"`` (all in this process, in turn). The
+            first 51,200 steps of the default preset took 68 s batched against 74 s with
+            ``"subproc"`` (collecting, policy included, at 2,000 against 1,570 env-steps/s; 2-core
+            Xeon; docs/benchmarks.md).
         total_timesteps: Environment steps of training, over all environments.
         seed: Seed of the policy and of the environments (``seed + i`` for the ``i``-th).
         n_steps: Steps per environment per rollout.
@@ -71,7 +73,7 @@ class PPOConfig:
     action_type: str = "discrete"
     obs_keys: tuple[str, ...] = ("scan", "local_map", "velocity")
     n_envs: int = 4
-    vec_env: str = "subproc"
+    vec_env: str = "batched"
     total_timesteps: int = 500_000
     seed: int = 0
     n_steps: int = 512
@@ -94,8 +96,8 @@ class PPOConfig:
             raise ConfigError(
                 f"PPOConfig.action_type must be discrete or continuous, got {self.action_type!r}"
             )
-        if self.vec_env not in ("batched", "subproc", "dummy"):
-            raise ConfigError(f"PPOConfig.vec_env must be batched, subproc or dummy, got {self.vec_env!r}")
+        if self.vec_env not in VEC_ENVS:
+            raise ConfigError(f"PPOConfig.vec_env must be one of {', '.join(VEC_ENVS)}, got {self.vec_env!r}")
         for name in (
             "max_steps",
             "n_envs",

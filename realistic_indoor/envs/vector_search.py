@@ -1,0 +1,91 @@
+"""The native vector environment of victim search: the batched exploration step, then victims.
+
+``gym.make_vec("OfficeSearch-v0", num_envs=N)`` returns :class:`BatchedSearchEnv`. Physics,
+laser, map and local view of all robots run in the one compiled call of
+:class:`~realistic_indoor.envs.vector.BatchedExploreEnv`; the victim sensor then looks, robot by
+robot, with the building's compiled line of sight (a few microseconds each).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.envs.observations import explore_observations
+from realistic_indoor.envs.search import VictimObservation
+from realistic_indoor.envs.vector import BatchedExploreEnv
+from realistic_indoor.sim.disc_physics import THETA, X, Y
+from realistic_indoor.sim.victims import Victims, place_victims
+
+__all__ = ["BatchedSearchEnv"]
+
+
+class BatchedSearchEnv(BatchedExploreEnv):
+    """``num_envs`` search robots, each in its own building, stepped in one compiled call.
+
+    The task, spaces, rewards and episode ends of :class:`~realistic_indoor.envs.SearchEnv`
+    (victims placed at each reset, found when the sensor first sees them; the episode ends when
+    all are found), batched as :class:`~realistic_indoor.envs.vector.BatchedExploreEnv` batches
+    exploration: next-step autoreset, ``info`` as arrays (adding ``victims_found`` and
+    ``victims_total``), ``reset(seed=s)`` seeding sub-environment ``k`` with ``s + k`` so that
+    it runs the episode of a ``SearchEnv`` reset with that seed, victims included.
+
+    Args:
+        num_envs: Number of sub-environments (robots).
+        config: The configuration (as :class:`SearchEnv`); ``None`` for the preset's.
+        max_episode_steps: The registered step limit; sets ``max_steps`` when given.
+        preset: A registered id whose configuration is the base when ``config`` is not given.
+        **overrides: Fields of :class:`~realistic_indoor.envs.config.EnvConfig`.
+    """
+
+    task = "search"
+    term_names = ("new_area", "collision", "time", "victim")
+
+    def __init__(self, num_envs: int = 1, config: Any = None, max_episode_steps: int | None = None,
+                 preset: str | None = None, **overrides: Any) -> None:  # fmt: skip
+        super().__init__(num_envs, config, max_episode_steps, preset, **overrides)
+        self._victims = [Victims(self.config.victims) for _ in range(num_envs)]
+        self._victim_view = VictimObservation(self.config)
+
+    @property
+    def victims(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Each sub-environment's ``(positions (N, 2) m, found (N,) bool)`` (copies)."""
+        return [(v.xy.copy(), v.found.copy()) for v in self._victims]
+
+    def _observation_parts(self) -> dict[str, Any]:
+        return {**explore_observations(self.config), "victims": VictimObservation(self.config)}
+
+    def _reset_one(self, k: int) -> None:
+        super()._reset_one(k)  # the laser noise of the first scan is drawn: then the victims
+        world = self._batch.worlds[k]
+        xy = place_victims(world, self._rngs[k], self.config.victims)
+        self._victims[k].reset(xy, world.raycaster, self._pose(k))
+
+    def _sense(self, stepped: np.ndarray) -> None:
+        self._terms[:, 3] = 0.0
+        for k in np.flatnonzero(stepped):
+            world = self._batch.worlds[self._batch.robot_building[k]]
+            self._terms[k, 3] = self._victims[k].look(world.raycaster, self._pose(int(k)))
+
+    def _done(self) -> np.ndarray:
+        return np.array([v.found.all() for v in self._victims])
+
+    def _observe(self) -> dict[str, np.ndarray]:
+        obs = super()._observe()
+        obs["victims"] = np.stack(
+            [self._victim_view.encode(self._pose(k), v) for k, v in enumerate(self._victims)]
+        )
+        return obs
+
+    def _info(self, rewards: bool) -> dict[str, Any]:
+        info = super()._info(rewards)
+        mask = np.ones(self.num_envs, dtype=bool)
+        info["victims_found"] = np.array([int(v.found.sum()) for v in self._victims])
+        info["victims_total"] = np.array([len(v.found) for v in self._victims])
+        info["_victims_found"] = info["_victims_total"] = mask
+        return info
+
+    def _pose(self, k: int) -> tuple[float, float, float]:
+        phys = self._batch.phys
+        return (float(phys[k, X]), float(phys[k, Y]), float(phys[k, THETA]))

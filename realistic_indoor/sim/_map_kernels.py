@@ -70,18 +70,21 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
         r = rows[i]
         c = c0[i]
         end = c1[i]
-        while c < end:
-            if todo[r, c // STRIP] == 0:  # nothing left to mark in this strip: jump past it
-                c = (c // STRIP + 1) * STRIP
-                continue
-            if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
-                grid[r, c] = MAPPED_FREE
-                todo[r, c // STRIP] -= 1
-                if pooled[r // k, c // k] == MAPPED_UNKNOWN:
-                    pooled[r // k, c // k] = MAPPED_FREE
-                if targets[r, c] == TRUTH_REACHABLE:
-                    new += 1
-            c += 1
+        while c < end:  # strip by strip: a strip with nothing left to mark is jumped
+            s = c // STRIP
+            stop = min(end, (s + 1) * STRIP)
+            left = todo[r, s]
+            while left > 0 and c < stop:
+                if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
+                    grid[r, c] = MAPPED_FREE
+                    left -= 1
+                    if pooled[r // k, c // k] == MAPPED_UNKNOWN:
+                        pooled[r // k, c // k] = MAPPED_FREE
+                    if targets[r, c] == TRUTH_REACHABLE:
+                        new += 1
+                c += 1
+            todo[r, s] = left
+            c = stop
     return new
 
 

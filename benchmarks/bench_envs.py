@@ -48,7 +48,7 @@ from bench_sim import PLAN_FILES, PLANS  # the simulator benchmark's plans, span
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
 from realistic_indoor.envs import PRESETS
 from realistic_indoor.envs.simulation import Simulation
-from realistic_indoor.envs.vector import ROBOTS_PER_THREAD
+from realistic_indoor.envs.vector import step_threads
 
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
 YARDSTICK = "CartPole-v1"
@@ -197,7 +197,7 @@ def _vector_table(env_id: str, args: argparse.Namespace) -> None:
                     envs.step(a)
                 rates.append(n * len(actions) / (time.perf_counter() - start))
             rate = statistics.median(rates)
-            used = max(1, min(threads, n // ROBOTS_PER_THREAD))  # the env's own cap
+            used = step_threads(n, threads)  # the env's own rule
             print(f"| {n} | {used} | {rate:,.0f} | {rate / ys:.3f} | {envs.nbytes / n / 1e6:.1f} |")
         numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
         envs.close()

@@ -27,13 +27,22 @@ from realistic_indoor.sim.lidar import beam_offsets
 from realistic_indoor.sim.mapping import beam_table
 from realistic_indoor.sim.world import World
 
-__all__ = ["INFO_KEYS", "BatchedExploreEnv"]
+__all__ = ["INFO_KEYS", "ROBOTS_PER_THREAD", "BatchedExploreEnv", "step_threads"]
 
 INFO_KEYS = ("coverage", "observed_area_m2", "path_length_m", "collisions")
 """Arrays of ``info`` after every step and reset (with Gymnasium's ``_key`` masks)."""
 ROBOTS_PER_THREAD = 16
 """Fewest robots per numba thread: a step of a few robots on two threads of a loaded 2-core
 machine took 9 ms (waking the other thread), against 0.1 ms per robot on one."""
+
+
+def step_threads(num_envs: int, available: int) -> int:
+    """The numba threads a step of ``num_envs`` robots runs on, of ``available`` ones.
+
+    One per :data:`ROBOTS_PER_THREAD` robots; below two threads' worth the step runs on the
+    calling thread (:func:`~realistic_indoor.sim.batch.step_batch_serial`).
+    """
+    return max(1, min(available, num_envs // ROBOTS_PER_THREAD))
 
 
 class BatchedExploreEnv(VectorEnv):
@@ -280,13 +289,13 @@ class BatchedExploreEnv(VectorEnv):
         for k in np.flatnonzero(self._mode == STEP):
             self._noise_for(int(k))
         b = self._batch
-        if self.num_envs < 2 * ROBOTS_PER_THREAD or numba.config.NUMBA_NUM_THREADS < 2:
+        if step_threads(self.num_envs, numba.config.NUMBA_NUM_THREADS) == 1:
             # one thread: numba's thread pool is not even started (get_num_threads would start
             # it), so its OpenMP threads cannot slow torch down in the same process
             self._step_batch(b, step_batch_serial)
             return
         outer = numba.get_num_threads()
-        numba.set_num_threads(max(1, min(outer, self.num_envs // ROBOTS_PER_THREAD)))
+        numba.set_num_threads(step_threads(self.num_envs, outer))
         try:
             self._step_batch(b, step_batch)
         finally:

@@ -126,17 +126,39 @@ LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 
 
 @njit(cache=True, nogil=True, parallel=True)
-def step_batch(*args):  # pragma: no cover - compiled
+def step_batch(
+    mode,
+    commands,
+    phys,
+    robot_building,
+    meta,
+    skips,
+    targets,
+    segments,
+    seg_start,
+    seg_items,
+    seg_origin,
+    grids,
+    pooled,
+    todo,
+    observed,
+    params,
+    cos_off,
+    sin_off,
+    noise,
+    lidar,
+    local,
+    out_scan,
+    out_local,
+    out_terms,
+    out_motion,
+):  # pragma: no cover - compiled
     """Advance every robot whose ``mode`` is :data:`STEP`; scan and map those at :data:`RESET`.
 
     Robots run in parallel (numba's threads, as many as ``numba.set_num_threads`` allows);
     :func:`step_batch_serial` is the same step on the calling thread only.
 
     Args:
-        *args: The state and the outputs of the robots, in the order below (the arguments of
-            ``_step_robot`` after the robot's index).
-
-    In order:
         mode: ``(n,)`` int64 :data:`SKIP`, :data:`STEP` or :data:`RESET` per robot.
         commands: ``(n, 2)`` float64 ``(v m/s, w rad/s)``.
         phys: ``(n, STATE_SIZE)`` physics state, updated.
@@ -164,19 +186,57 @@ def step_batch(*args):  # pragma: no cover - compiled
             collision, time); further ones are the caller's (search: victims).
         out_motion: ``(n,)`` float64 distance driven (m), written.
     """
-    for k in prange(args[0].shape[0]):
-        _step_robot(np.int64(k), *args)  # prange counts in uint64; lists index with a signed int
+    for k in prange(mode.shape[0]):
+        i = np.int64(k)  # prange counts in uint64; lists index with a signed int
+        _step_robot(
+            i, mode, commands, phys, robot_building, meta, skips, targets, segments, seg_start,
+            seg_items, seg_origin, grids, pooled, todo, observed, params, cos_off, sin_off, noise,
+            lidar, local, out_scan, out_local, out_terms, out_motion,
+        )  # fmt: skip
 
 
 @njit(cache=True, nogil=True)
-def step_batch_serial(*args):  # pragma: no cover - compiled
+def step_batch_serial(
+    mode,
+    commands,
+    phys,
+    robot_building,
+    meta,
+    skips,
+    targets,
+    segments,
+    seg_start,
+    seg_items,
+    seg_origin,
+    grids,
+    pooled,
+    todo,
+    observed,
+    params,
+    cos_off,
+    sin_off,
+    noise,
+    lidar,
+    local,
+    out_scan,
+    out_local,
+    out_terms,
+    out_motion,
+):  # pragma: no cover - compiled
     """:func:`step_batch` on the calling thread: no thread pool is started or woken.
 
     Where a step is short (a few robots), waking numba's threads costs more than it saves, and
     their OpenMP threads spinning afterwards slow other libraries of the process (torch) down.
+
+    The three functions spell their parameters out: with ``*args`` numba types every argument
+    in Python on each call (about 0.3 ms a call, against a few microseconds).
     """
-    for i in range(args[0].shape[0]):
-        _step_robot(i, *args)
+    for i in range(mode.shape[0]):
+        _step_robot(
+            i, mode, commands, phys, robot_building, meta, skips, targets, segments, seg_start,
+            seg_items, seg_origin, grids, pooled, todo, observed, params, cos_off, sin_off, noise,
+            lidar, local, out_scan, out_local, out_terms, out_motion,
+        )  # fmt: skip
 
 
 @njit(cache=True, nogil=True)

@@ -128,10 +128,13 @@ class SchoolGenerator(_WingGenerator):
 
     Same layouts as :class:`OfficeGenerator` with a school's conventions: wider corridors,
     deeper classroom strips, core sections left open as courtyards, an entrance hall or atrium,
-    and a gym beside the block, reached from a corridor end or a hall.
+    and a gym beside the block, reached from a corridor end or a hall. Small schools are one
+    corridor with classrooms, toilets and stores on both sides; the gym comes in between 600
+    and 1,200 m2 (none below, always above), as in the real school plans, which have no
+    gym-sized room under about 1,000 m2.
 
     Args:
-        area_m2: Floor area wanted (m2), from 800 to 50,000 m2 (default 3,000).
+        area_m2: Floor area wanted (m2), from 300 to 50,000 m2 (default 3,000).
         model: ``None`` or ``"real"`` (fitted to the shared real schools), ``"paper"`` or a
             :class:`~realistic_indoor.models.BuildingTypeModel`.
         layout: ``"blocks"`` or ``"wings"`` (default: wings with ``model="paper"``, else blocks).

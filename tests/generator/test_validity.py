@@ -13,7 +13,7 @@ TYPES = ["office", "school", "house", "random"]
 REALISTIC = ["office", "school", "house"]
 SIZES = {
     "office": [250, 600, 1200, 3500, 6000, 10_000],
-    "school": [800, 1500, 3000, 6000, 10_000],
+    "school": [300, 800, 1500, 3000, 6000, 10_000],
     "house": [50, 100, 300, 600, 1000],
     "random": [225, 1000, 5000, 10_000],
 }

@@ -13,7 +13,7 @@ from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
-from realistic_indoor.generator.wings.annex import add_annex
+from realistic_indoor.generator.wings.annex import add_annex, draw_annex
 
 if TYPE_CHECKING:
     import numpy as np
@@ -37,8 +37,9 @@ def block_plan(
     """Lay out a compact building of about ``area_m2`` as one block of bars.
 
     An annex (a school's gym, a big room as the real school plans label it) takes up to a quarter
-    of the area; where it finds no free place
-    beside the block, the block is drawn again (three tries), then laid out over the whole area.
+    of the area (small buildings may have none, see ``draw_annex``); where it finds no free
+    place beside the block, the block is drawn again (three tries), then laid out over the
+    whole area.
 
     Returns:
         The plan (rooms, doors, functions) and facts about the layout for the metadata
@@ -46,7 +47,7 @@ def block_plan(
         with ``"+court"`` when a core section is a courtyard, for one block; ``"L"``, ``"T"`` or
         ``"U"`` for a main bar with wings).
     """
-    annex_m2 = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2) if style.annex else 0.0
+    annex_m2, style = draw_annex(rng, area_m2, style)
     laid = None
     for _ in range(3 if annex_m2 else 0):
         laid = _lay_out(rng, area_m2, model, style, blocks, annex_m2)

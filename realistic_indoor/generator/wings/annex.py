@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
@@ -17,7 +18,26 @@ if TYPE_CHECKING:
 
     from realistic_indoor.generator.wings.style import WingStyle
 
-__all__ = ["add_annex"]
+__all__ = ["add_annex", "draw_annex"]
+
+
+def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tuple[float, WingStyle]:
+    """The annex's area for a building of ``area_m2`` (m2) and the style to lay it out with.
+
+    The annex takes the style's range of area, at most a quarter of the building's. A building
+    smaller than the style's ``annex_from_m2`` may have none (certainly none below its first
+    value): its area is then 0, and the style returned no longer requires the annex's function
+    of another room (a small school has no gym, where a larger one whose annex found no place
+    gives the name to a hall).
+    """
+    if not style.annex:
+        return 0.0, style
+    area = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2)
+    low, high = style.annex_from_m2
+    if area_m2 >= high or rng.random() < (area_m2 - low) / (high - low):
+        return area, style
+    required = tuple(f for f in style.required_functions if f != style.annex)
+    return 0.0, replace(style, required_functions=required)
 
 
 def _outward(plan: Plan, i: int, w: Contact) -> int:

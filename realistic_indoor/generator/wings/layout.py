@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_metres, to_units
 from realistic_indoor.generator.plan import H, Plan
-from realistic_indoor.generator.wings.annex import add_annex
+from realistic_indoor.generator.wings.annex import add_annex, draw_annex
 from realistic_indoor.generator.wings.paint import paint
 from realistic_indoor.generator.wings.sizing import MIN_GAP_M, Dims, size_skeleton
 from realistic_indoor.generator.wings.skeleton import Skeleton, sample_shape
@@ -58,14 +58,15 @@ def wing_plan(
 ) -> tuple[Plan, dict[str, str]]:
     """Lay out a wing building of about ``area_m2``.
 
-    An annex (a school's gym) takes up to a quarter of the area; where it finds no free place
-    beside the wings, the wings are laid out again over the whole area.
+    An annex (a school's gym) takes up to a quarter of the area (small buildings may have none,
+    see ``draw_annex``); where it finds no free place beside the wings, the wings are laid out
+    again over the whole area.
 
     Returns:
         The plan (rooms, doors, functions) and facts about the layout for the metadata
         (``shape``).
     """
-    annex_m2 = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2) if style.annex else 0.0
+    annex_m2, style = draw_annex(rng, area_m2, style)
     laid = _lay_out(rng, area_m2, model, style, annex_m2)
     if laid is None:
         laid = _lay_out(rng, area_m2, model, style, 0.0)

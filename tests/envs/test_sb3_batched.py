@@ -5,6 +5,7 @@ from __future__ import annotations
 import gymnasium as gym
 import numpy as np
 import pytest
+from gymnasium.utils.env_checker import data_equivalence
 
 pytest.importorskip("stable_baselines3")
 
@@ -39,6 +40,12 @@ def test_batched_vec_env__resets_in_the_same_step_with_terminal_observation_and_
     assert not done.any() and all("episode" not in i for i in infos)  # no second reset next step
 
 
+def test_batched_vec_env__refuses_an_order_that_is_no_permutation():
+    envs = gym.make_vec("OfficeExplore-v0", num_envs=2, area_m2=300.0)
+    with pytest.raises(ValueError, match="permutation"):
+        BatchedVecEnv([envs], KEYS, order=[0, 0])
+
+
 def test_batched_vec_env__restart_leaves_other_sub_envs_as_they_are():
     envs = gym.make_vec("OfficeExplore-v0", num_envs=2, area_m2=300.0)
     envs.reset(seed=1)
@@ -69,6 +76,25 @@ def test_make_vec_env__batched_mixes_the_ids_in_one_vec_env():
     obs = venv.reset()
     assert obs["local_map"].shape == (4, 1, 64, 64)
     venv.close()
+
+
+def test_make_vec_env__batched_steps_the_episodes_of_the_dummy_vec_env():
+    def rollout(vec_env):
+        config = ppo_preset("smoke", vec_env=vec_env, n_envs=4, max_steps=12, seed=5)
+        venv = make_vec_env(config)  # offices, schools and houses in turn, seeds 5 to 8
+        rng = np.random.default_rng(0)
+        out = [dict(venv.reset())]
+        for _ in range(30):  # across two resets of every sub-environment
+            obs, reward, done, infos = venv.step(rng.integers(0, 6, 4))
+            out += [dict(obs), reward, done, [i["TimeLimit.truncated"] for i in infos]]
+            out += [{k: v for k, v in i["episode"].items() if k != "t"} for i in infos if "episode" in i]
+            out += [dict(i["terminal_observation"]) for i in infos if "terminal_observation" in i]
+        venv.close()
+        return out
+
+    batched, dummy = rollout("batched"), rollout("dummy")
+    assert data_equivalence(batched, dummy, exact=True)
+    assert sum(1 for item in dummy if isinstance(item, dict) and "l" in item) == 8  # 2 episodes each
 
 
 def test_make_vec_env__search_ids_train_batched_with_the_victim_sensor():

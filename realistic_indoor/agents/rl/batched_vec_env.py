@@ -5,7 +5,8 @@ episode's first observation and the last one in ``info["terminal_observation"]``
 :class:`~realistic_indoor.envs.vector.BatchedExploreEnv` resets on the next step (Gymnasium's
 default). The adapter restarts finished sub-environments at once
 (:meth:`BatchedExploreEnv.restart`) and does what SB3's ``Monitor`` would: ``info["episode"]``
-(return, length, seconds) when an episode ends, ``TimeLimit.truncated``, and ``coverage``.
+(return, length, seconds, final coverage) when an episode ends, ``TimeLimit.truncated``, and
+``coverage``.
 """
 
 from __future__ import annotations
@@ -24,18 +25,25 @@ __all__ = ["BatchedVecEnv"]
 class BatchedVecEnv(VecEnv):
     """Several native vector environments (e.g. one per registered id) as one SB3 ``VecEnv``.
 
-    Sub-environments are numbered group after group; observations are the groups' arrays
-    concatenated and filtered to ``keys``.
+    Observations are filtered to ``keys``. By default sub-environments are numbered group after
+    group; ``order`` numbers them otherwise, e.g. as a ``DummyVecEnv`` of single environments
+    taking several ids in turn: with the same seed (:meth:`seed` gives sub-environment ``i``
+    ``seed + i``) it then steps exactly that ``DummyVecEnv``'s episodes.
 
     Args:
         groups: Native vector environments with the same action space and observation keys.
         keys: Observation keys the policy reads.
+        order: For each sub-environment, in this ``VecEnv``'s numbering, its position when the
+            groups' sub-environments are listed group after group (a permutation of
+            ``range(num_envs)``); ``None`` for group after group.
 
     Raises:
-        ValueError: If ``groups`` is empty or their spaces differ.
+        ValueError: If ``groups`` is empty, their spaces differ or ``order`` is no permutation.
     """
 
-    def __init__(self, groups: Sequence[Any], keys: Sequence[str]) -> None:
+    def __init__(
+        self, groups: Sequence[Any], keys: Sequence[str], order: Sequence[int] | None = None
+    ) -> None:
         if not groups:
             raise ValueError("BatchedVecEnv needs at least one vector environment")
         self.groups = list(groups)
@@ -49,8 +57,13 @@ class BatchedVecEnv(VecEnv):
                 raise ValueError("BatchedVecEnv: the vector environments' spaces differ")
         sizes = [g.num_envs for g in self.groups]
         self._bounds = np.concatenate([[0], np.cumsum(sizes)])
+        n = int(self._bounds[-1])
+        self._order = np.arange(n) if order is None else np.asarray(order, dtype=np.int64)
+        if sorted(self._order.tolist()) != list(range(n)):
+            raise ValueError(f"BatchedVecEnv: order must be a permutation of range({n}), got {order!r}")
+        self._rank = np.argsort(self._order)  # group-after-group position -> this numbering
         self.render_mode = None
-        super().__init__(int(self._bounds[-1]), obs_space, first.single_action_space)
+        super().__init__(n, obs_space, first.single_action_space)
         self._actions: np.ndarray | None = None
         self._returns = np.zeros(self.num_envs)
         self._lengths = np.zeros(self.num_envs, dtype=np.int64)
@@ -59,9 +72,10 @@ class BatchedVecEnv(VecEnv):
     def reset(self) -> dict[str, np.ndarray]:
         """Start an episode in every sub-environment (seeded by :meth:`seed` if it was called)."""
         parts = []
+        grouped_seeds = [self._seeds[i] for i in self._rank]
         for j, g in enumerate(self.groups):
             lo, hi = self._bounds[j], self._bounds[j + 1]
-            seeds = self._seeds[lo:hi]
+            seeds = grouped_seeds[lo:hi]
             obs, _ = g.reset(seed=None if all(s is None for s in seeds) else list(seeds))
             parts.append(obs)
         self._reset_seeds()
@@ -72,7 +86,7 @@ class BatchedVecEnv(VecEnv):
 
     def step_async(self, actions: np.ndarray) -> None:
         """Remember the actions of the next :meth:`step_wait`."""
-        self._actions = np.asarray(actions)
+        self._actions = np.asarray(actions)[self._rank]  # in group-after-group order
 
     def step_wait(self) -> VecEnvStepReturn:
         """Step every group; restart the finished sub-environments (same-step autoreset)."""
@@ -94,7 +108,13 @@ class BatchedVecEnv(VecEnv):
             dones.append(done)
             infos.extend(group_infos)
         self._actions = None
-        return self._join(parts), np.concatenate(rewards).astype(np.float32), np.concatenate(dones), infos
+        rewards_all = np.concatenate(rewards).astype(np.float32)[self._order]
+        return (
+            self._join(parts),
+            rewards_all,
+            np.concatenate(dones)[self._order],
+            [infos[i] for i in self._order],
+        )
 
     def _infos(
         self, lo: int, reward: np.ndarray, terminated: np.ndarray, truncated: np.ndarray, info: dict
@@ -112,16 +132,17 @@ class BatchedVecEnv(VecEnv):
             }
             if terminated[k] or truncated[k]:
                 item["episode"] = {
-                    "r": float(self._returns[i]),
+                    "r": round(float(self._returns[i]), 6),  # as SB3's Monitor rounds it
                     "l": int(self._lengths[i]),
                     "t": round(now - self._starts[i], 6),
+                    "coverage": item["coverage"],  # Monitor(info_keywords=("coverage",)) adds it
                 }
                 self._returns[i], self._lengths[i], self._starts[i] = 0.0, 0, now
             out.append(item)
         return out
 
     def _join(self, parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-        return {k: np.concatenate([p[k] for p in parts]) for k in self.keys}
+        return {k: np.concatenate([p[k] for p in parts])[self._order] for k in self.keys}
 
     def close(self) -> None:
         """Close every group."""
@@ -130,7 +151,7 @@ class BatchedVecEnv(VecEnv):
 
     def get_attr(self, attr_name: str, indices: VecEnvIndices = None) -> list[Any]:
         """The attribute of each sub-environment's group (``render_mode`` is ``None``)."""
-        return [getattr(self._group_of(i), attr_name) for i in self._get_indices(indices)]
+        return [getattr(self._group_of(int(self._order[i])), attr_name) for i in self._get_indices(indices)]
 
     def set_attr(self, attr_name: str, value: Any, indices: VecEnvIndices = None) -> None:
         """Not supported: sub-environments share their group's state."""

@@ -51,7 +51,8 @@ def make_vec_env(config: PPOConfig) -> Any:
 
     ``vec_env="batched"``: the ids' native vector environments (one compiled step each, in this
     process) behind :class:`~realistic_indoor.agents.rl.batched_vec_env.BatchedVecEnv`, the ids
-    taking the ``n_envs`` sub-environments in turn (ids without one would fall back to
+    taking the ``n_envs`` sub-environments in turn, numbered as the other two number them: with
+    one seed all three step the same episodes (ids without one would fall back to
     ``"dummy"``; every registered id has one). Otherwise one Gymnasium environment per sub-environment, in sub-processes
     (``"subproc"``) or in this process (``"dummy"``).
     """
@@ -75,12 +76,14 @@ def _batched(factories: list[EnvFactory]) -> Any:
     import realistic_indoor.envs  # noqa: F401 - registers the ids
     from realistic_indoor.agents.rl.batched_vec_env import BatchedVecEnv
 
-    counts: dict[str, int] = {}
-    for f in factories:
-        counts[f.env_id] = counts.get(f.env_id, 0) + 1
+    members: dict[str, list[int]] = {}  # each id's factories, in the order they come
+    for i, f in enumerate(factories):
+        members.setdefault(f.env_id, []).append(i)
     by_id = {f.env_id: f for f in factories}
     groups = [
-        gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **by_id[env_id].kwargs)
-        for env_id, n in counts.items()
+        gym.make_vec(env_id, num_envs=len(m), vectorization_mode="vector_entry_point", **by_id[env_id].kwargs)
+        for env_id, m in members.items()
     ]
-    return BatchedVecEnv(groups, factories[0].keys)
+    grouped = [i for m in members.values() for i in m]  # factory of each group-after-group position
+    order = [grouped.index(i) for i in range(len(factories))]
+    return BatchedVecEnv(groups, factories[0].keys, order)

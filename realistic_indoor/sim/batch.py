@@ -295,7 +295,12 @@ def _step_robot(
     sh = math.sin(phys[i, THETA])
     true_m = np.empty(n_beams, dtype=np.float32)
     kind = np.empty(n_beams, dtype=np.uint8)
-    _cast_fan(skips[b], px, py, ch, sh, cos_off, sin_off, max_range / res, res, true_m, kind)
+    # every position in the single robot's own arithmetic (Raycaster.cast_into, RobotMap): a
+    # last-bit difference moves a ray that runs along a cell boundary into the next row
+    scale = 1.0 / res
+    x_cast = (phys[i, X] - x0) * scale
+    y_cast = (phys[i, Y] - y0) * scale
+    _cast_fan(skips[b], x_cast, y_cast, ch, sh, cos_off, sin_off, max_range * scale, res, true_m, kind)
     _readings(true_m, kind, noise[i], noise_std, max_range, out_scan[i])
     new = integrate_scan(
         grids[i],
@@ -315,7 +320,10 @@ def _step_robot(
         closed,
     )
     observed[i] += new
-    render_local(pooled[i], LUT, px / pool, py / pool, ch, sh, pixel, out_local[i, 0])
+    cell = res * pool
+    x_view = (phys[i, X] - x0) / cell
+    y_view = (phys[i, Y] - y0) / cell
+    render_local(pooled[i], LUT, x_view, y_view, ch, sh, pixel, out_local[i, 0])
     out_terms[i, 0] = new * (res * res)  # as RobotMap.update: cells times the cell area
     out_terms[i, 1] = 1.0 if collided else 0.0
     out_terms[i, 2] = 1.0

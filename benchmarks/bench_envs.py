@@ -188,8 +188,8 @@ def _vector_table(env_id: str, args: argparse.Namespace) -> None:
         actions = np.random.default_rng(args.seed).uniform(-1, 1, (100, n, 2)).astype(np.float32)
         for a in actions:
             envs.step(a)
-        for threads in sorted({1, numba.config.NUMBA_NUM_THREADS}):
-            numba.set_num_threads(threads)
+        for used in sorted({step_threads(n, t) for t in (1, numba.config.NUMBA_NUM_THREADS)}):
+            numba.set_num_threads(used)
             rates = []
             for _ in range(BLOCKS):
                 start = time.perf_counter()
@@ -197,7 +197,6 @@ def _vector_table(env_id: str, args: argparse.Namespace) -> None:
                     envs.step(a)
                 rates.append(n * len(actions) / (time.perf_counter() - start))
             rate = statistics.median(rates)
-            used = step_threads(n, threads)  # the env's own rule
             print(f"| {n} | {used} | {rate:,.0f} | {rate / ys:.3f} | {envs.nbytes / n / 1e6:.1f} |")
         numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
         envs.close()

@@ -50,10 +50,11 @@ class PPOConfig:
         n_envs: Environments run in parallel.
         vec_env: ``"batched"`` (the default: the ids' native vector environments, all
             sub-environments of an id stepped by one compiled call, in this process),
-            ``"subproc"`` (one process each) or ``"dummy"`` (all in this process, in turn). The
-            first 51,200 steps of the default preset took 68 s batched against 74 s with
-            ``"subproc"`` (collecting, policy included, at 2,000 against 1,570 env-steps/s; 2-core
-            Xeon; docs/benchmarks.md).
+            ``"subproc"`` (one process each) or ``"dummy"`` (all in this process, in turn).
+            All three step the same episodes for one seed, so training is the same; the first
+            51,200 steps of the default preset took 66.8 s batched, 68.3 s subproc and 63.1 s
+            dummy, and with 16 environments batched collected 6% faster than dummy
+            (docs/benchmarks.md).
         total_timesteps: Environment steps of training, over all environments.
         seed: Seed of the policy and of the environments (``seed + i`` for the ``i``-th).
         n_steps: Steps per environment per rollout.

@@ -1,0 +1,99 @@
+"""Side by side with another checkout: env step rate against CartPole-v1, and a new office's reset.
+
+Runs the same two measurements with this checkout and with ``OTHER`` (a folder holding another
+commit of the repository, e.g. made with ``git worktree add /tmp/old e06a6f2``), alternately,
+each in a fresh process with that checkout first on ``PYTHONPATH``:
+
+1. ``gym.make("OfficeExplore-v0")`` with random actions and ``CartPole-v1`` with random actions,
+   the same loop, CPU time, the median of five blocks: steps/s and their ratio;
+2. a new default office: ``make_generator("office")(rng)`` and ``World(building)``, CPU time, the
+   median of 12 seeds (ms).
+
+Usage::
+
+    .venv/bin/python benchmarks/bench_compare.py /tmp/old            # about a minute
+    .venv/bin/python benchmarks/bench_compare.py /tmp/old --rounds 3
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+MEASURE = r"""
+import json, statistics, time
+import gymnasium as gym, numpy as np
+import realistic_indoor  # noqa: F401  (registers the ids)
+from realistic_indoor.generator import make_generator
+from realistic_indoor.sim.world import World
+
+def rate(env_id, n):
+    env = gym.make(env_id)
+    env.reset(seed=0)
+    env.action_space.seed(0)
+    actions = [env.action_space.sample() for _ in range(n)]
+    for a in actions[:200]:
+        env.step(a)
+    out = []
+    for _ in range(5):
+        start = time.process_time()
+        for a in actions:
+            _, _, terminated, truncated, _ = env.step(a)
+            if terminated or truncated:
+                env.reset()
+        out.append(n / (time.process_time() - start))
+    return statistics.median(out)
+
+gen = make_generator("office")
+World(gen(np.random.default_rng(100)))
+gen_ms, world_ms = [], []
+for seed in range(12):
+    start = time.process_time()
+    building = gen(np.random.default_rng(seed))
+    middle = time.process_time()
+    World(building)
+    gen_ms.append(1e3 * (middle - start))
+    world_ms.append(1e3 * (time.process_time() - middle))
+cartpole, office = rate("CartPole-v1", 50_000), rate("OfficeExplore-v0", 4_000)
+print(json.dumps({"cartpole": cartpole, "office": office, "generation_ms": statistics.median(gen_ms),
+                  "world_ms": statistics.median(world_ms)}))
+"""
+
+
+def measure(checkout: Path) -> dict[str, float]:
+    """The figures of one checkout, measured in a fresh process."""
+    env = dict(os.environ, PYTHONPATH=str(checkout))
+    done = subprocess.run(
+        [sys.executable, "-c", MEASURE], env=env, cwd=checkout, capture_output=True, text=True, check=True
+    )
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Print a Markdown table of both checkouts' figures, round after round."""
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("other", type=Path, help="folder of the other checkout")
+    p.add_argument("--rounds", type=int, default=2, help="measurements of each checkout (default 2)")
+    args = p.parse_args(argv)
+    here = Path(__file__).resolve().parents[1]
+    if not (args.other / "realistic_indoor").is_dir():
+        p.error(f"{args.other} holds no realistic_indoor package; give a checkout of this repository")
+    print("| checkout | round | OfficeExplore-v0 steps/s | CartPole-v1 steps/s | x CartPole-v1 |"
+          " generation ms | world build ms | generation + world ms |")  # fmt: skip
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    for r in range(args.rounds):
+        for name, checkout in (("other", args.other.resolve()), ("this", here)):
+            m = measure(checkout)
+            total = m["generation_ms"] + m["world_ms"]
+            print(
+                f"| {name} ({checkout}) | {r + 1} | {m['office']:,.0f} | {m['cartpole']:,.0f} | "
+                f"{m['office'] / m['cartpole']:.3f} | {m['generation_ms']:.1f} | {m['world_ms']:.1f} | {total:.1f} |"
+            )
+
+
+if __name__ == "__main__":
+    main()

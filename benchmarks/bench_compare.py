@@ -79,6 +79,8 @@ def main(argv: list[str] | None = None) -> None:
     p.add_argument("other", type=Path, help="folder of the other checkout")
     p.add_argument("--rounds", type=int, default=2, help="measurements of each checkout (default 2)")
     args = p.parse_args(argv)
+    if args.rounds < 1:
+        p.error(f"--rounds must be at least 1, got {args.rounds}")
     here = Path(__file__).resolve().parents[1]
     if not (args.other / "realistic_indoor").is_dir():
         p.error(f"{args.other} holds no realistic_indoor package; give a checkout of this repository")

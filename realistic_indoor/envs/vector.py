@@ -37,10 +37,12 @@ machine took 9 ms (waking the other thread), against 0.1 ms per robot on one."""
 
 
 def step_threads(num_envs: int, available: int) -> int:
-    """The numba threads a step of ``num_envs`` robots runs on, of ``available`` ones.
+    """The numba threads a step of ``num_envs`` robots runs on when ``available`` may be used.
 
-    One per :data:`ROBOTS_PER_THREAD` robots; below two threads' worth the step runs on the
-    calling thread (:func:`~realistic_indoor.sim.batch.step_batch_serial`).
+    One per :data:`ROBOTS_PER_THREAD` robots, at most ``available``. The environment first asks
+    with numba's most (``NUMBA_NUM_THREADS``): for 1 the step runs on the calling thread
+    (:func:`~realistic_indoor.sim.batch.step_batch_serial`) and numba's thread pool is not
+    started; otherwise it asks again with the current ``numba.get_num_threads()``.
     """
     return max(1, min(available, num_envs // ROBOTS_PER_THREAD))
 
@@ -91,8 +93,9 @@ class BatchedExploreEnv(VectorEnv):
         preset: str | None = None,
         **overrides: Any,
     ) -> None:
-        if isinstance(num_envs, bool) or not isinstance(num_envs, int) or num_envs < 1:
+        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
             raise ConfigError(f"num_envs must be an integer >= 1, got {num_envs!r}")
+        num_envs = int(num_envs)
         if max_episode_steps is not None:
             overrides = {"max_steps": max_episode_steps, **overrides}
         self.config = base_config(config, preset).replace(**overrides)
@@ -197,7 +200,7 @@ class BatchedExploreEnv(VectorEnv):
             total = total + weighted[:, j]
         reward = np.where(stepped, total, 0.0)
         terminated = stepped & self._done()
-        truncated = stepped & ~terminated & (self._steps >= self.config.max_steps)
+        truncated = stepped & (self._steps >= self.config.max_steps)  # also when terminated, as TimeLimit
         self._autoreset = terminated | truncated
         info = self._info(rewards=True)
         return self._observe(), reward, terminated, truncated, info
@@ -214,9 +217,22 @@ class BatchedExploreEnv(VectorEnv):
 
         Returns:
             The batched observations of every sub-environment.
+
+        Raises:
+            ConfigError: If an index is not that of a sub-environment.
+            ResetNeeded: Before the first :meth:`reset` (or after :meth:`close`).
         """
+        if not self._rngs:
+            raise gym.error.ResetNeeded("call reset() before restart()")
+        chosen = np.unique(np.asarray(indices))
+        if chosen.size and (
+            chosen.dtype.kind not in "iu" or chosen.min() < 0 or chosen.max() >= self.num_envs
+        ):
+            raise ConfigError(
+                f"restart() takes sub-environment indices in 0..{self.num_envs - 1}, got {indices!r}"
+            )
         self._mode[:] = SKIP
-        for k in np.asarray(indices, dtype=np.int64):
+        for k in chosen.astype(np.int64):
             self._mode[k] = RESET
             self._reset_one(int(k))
             self._autoreset[k] = False
@@ -224,8 +240,9 @@ class BatchedExploreEnv(VectorEnv):
         return self._observe()
 
     def close_extras(self, **kwargs: Any) -> None:
-        """Free the worlds."""
+        """Free the worlds; a later step or restart asks for a reset first."""
         self._batch = Batch(self.num_envs)
+        self._rngs = []
 
     # -- state a user may inspect --------------------------------------------------------------------
     @property
@@ -259,11 +276,15 @@ class BatchedExploreEnv(VectorEnv):
     def _seeds(self, seed: int | list[int | None] | None) -> list[int | None] | None:
         if seed is None:
             return None
-        if isinstance(seed, (int, np.integer)):
-            return [int(seed) + k for k in range(self.num_envs)]
-        seeds = list(seed)
-        if len(seeds) != self.num_envs:
-            raise ConfigError(f"reset(seed=...) needs {self.num_envs} seeds, got {len(seeds)}")
+        if isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
+            seeds: list[int | None] = [int(seed) + k for k in range(self.num_envs)]
+        else:
+            seeds = list(seed)
+            if len(seeds) != self.num_envs:
+                raise ConfigError(f"reset(seed=...) needs {self.num_envs} seeds, got {len(seeds)}")
+        for s in seeds:
+            if s is not None and (isinstance(s, bool) or not isinstance(s, (int, np.integer)) or s < 0):
+                raise ConfigError(f"reset(seed=...) takes integers >= 0 (or None in a list), got {seed!r}")
         return seeds
 
     def _reset_one(self, k: int) -> None:

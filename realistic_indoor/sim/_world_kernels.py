@@ -56,7 +56,8 @@ def reachable_from(grid, row, col):  # pragma: no cover - compiled
     """The free cells joined to free cell ``(row, col)`` through free 4-neighbours.
 
     A scanline fill: each seed is widened to its whole run of free cells along the row, and
-    the rows above and below get one seed per free run that touches it.
+    the rows above and below get one seed per free run that touches it. The pending seeds fit
+    in a few thousand entries; a fill that needs more starts again with twice the room.
 
     Args:
         grid: ``(H, W)`` uint8 raster codes.
@@ -66,11 +67,18 @@ def reachable_from(grid, row, col):  # pragma: no cover - compiled
     Returns:
         ``(H, W)`` bool, ``True`` on the start's component.
     """
+    room = 4096
+    while True:
+        out = np.zeros(grid.shape, dtype=np.bool_)
+        if _fill(grid, row, col, out, np.empty(room, dtype=np.int32), np.empty(room, dtype=np.int32)):
+            return out
+        room *= 2
+
+
+@njit(cache=True, nogil=True)
+def _fill(grid, row, col, out, rows, cols):  # pragma: no cover - compiled
+    """:func:`reachable_from` into ``out`` with seed stacks ``rows``, ``cols``; False if they overflow."""
     h, w = grid.shape
-    out = np.zeros((h, w), dtype=np.bool_)
-    # pending seeds: a run of n cells pushes at most n + 1, so twice the cells bound them
-    rows = np.empty(2 * h * w + 1, dtype=np.int32)
-    cols = np.empty(2 * h * w + 1, dtype=np.int32)
     rows[0] = row
     cols[0] = col
     top = 1
@@ -95,11 +103,13 @@ def reachable_from(grid, row, col):  # pragma: no cover - compiled
             for cc in range(a, b + 1):
                 ok = grid[rr, cc] == RASTER_FREE and not out[rr, cc]
                 if ok and not inside:
+                    if top == rows.shape[0]:
+                        return False
                     rows[top] = rr
                     cols[top] = cc
                     top += 1
                 inside = ok
-    return out
+    return True
 
 
 @njit(cache=True, nogil=True)

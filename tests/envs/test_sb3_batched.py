@@ -87,6 +87,10 @@ def test_make_vec_env__batched_steps_the_episodes_of_the_dummy_vec_env():
         for _ in range(30):  # across two resets of every sub-environment
             obs, reward, done, infos = venv.step(rng.integers(0, 6, 4))
             out += [dict(obs), reward, done, [i["TimeLimit.truncated"] for i in infos]]
+            out += [
+                {k: i[k] for k in ("coverage", "observed_area_m2", "path_length_m", "collisions", "rewards")}
+                for i in infos
+            ]
             out += [{k: v for k, v in i["episode"].items() if k != "t"} for i in infos if "episode" in i]
             out += [dict(i["terminal_observation"]) for i in infos if "terminal_observation" in i]
         venv.close()

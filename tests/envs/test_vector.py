@@ -204,3 +204,33 @@ def test_vector_env__first_scans_match_the_single_env_also_along_cell_boundaries
     for k in range(n):
         first, _ = single.reset(seed=k)
         assert data_equivalence(first, {key: v[k] for key, v in obs.items()}, exact=True), k
+
+
+def test_vector_env__an_episode_ending_both_ways_at_once_reports_both_flags_as_the_single_env():
+    kwargs = {"area_m2": TEST_AREAS_M2["office"], "max_steps": 1, "coverage_target": 0.001}
+    envs = gym.make_vec("OfficeExplore-v0", num_envs=1, **kwargs)
+    envs.reset(seed=5)
+    single = gym.make("OfficeExplore-v0", **kwargs)
+    single.reset(seed=5)
+    action = np.zeros((1, 2), np.float32)
+    _, _, terminated, truncated, _ = envs.step(action)
+    _, _, one_terminated, one_truncated, _ = single.step(action[0])
+    assert (one_terminated, one_truncated) == (True, True)  # the goal, on the last allowed step
+    assert (terminated[0], truncated[0]) == (one_terminated, one_truncated)
+
+
+def test_vector_env__refuses_bad_restarts_seeds_and_use_after_close():
+    envs = _make(n=2)
+    with pytest.raises(gym.error.ResetNeeded):
+        envs.restart(np.array([0]))
+    envs.reset(seed=0)
+    for bad in ([2], [-1], [0.5]):
+        with pytest.raises(ConfigError, match=r"0\.\.1"):
+            envs.restart(np.array(bad))
+    for seed in (-5, [0, -1], [0, "a"]):
+        with pytest.raises(ConfigError, match="seed"):
+            envs.reset(seed=seed)
+    envs.close()
+    with pytest.raises(gym.error.ResetNeeded):
+        envs.step(np.zeros((2, 2), np.float32))
+    assert gym.make_vec("OfficeExplore-v0", num_envs=np.int64(2), area_m2=300.0).num_envs == 2

@@ -58,3 +58,14 @@ def test_skip_and_clearance__equal_the_numpy_expressions(res):
     assert np.array_equal(skip, want_skip)
     assert clearance.dtype == np.float32 and np.array_equal(clearance, want_clearance)
     assert want_skip[grid == RASTER_FREE].max() > 0  # the field has jumps to check
+
+
+def test_reachable_from__a_comb_with_more_teeth_than_the_first_seed_stack_holds():
+    grid = np.full((4, 20_001), RASTER_WALL, dtype=np.uint8)
+    grid[0] = RASTER_FREE  # the back of the comb
+    grid[1:3, ::2] = RASTER_FREE  # 10,001 teeth: one pending seed each, more than 4,096
+    grid[3, 1] = RASTER_FREE  # a cell no tooth reaches
+    got = reachable_from(grid, 0, 0)
+    want = grid == RASTER_FREE
+    want[3, 1] = False
+    assert np.array_equal(got, want)

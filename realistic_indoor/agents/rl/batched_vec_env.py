@@ -5,8 +5,9 @@ episode's first observation and the last one in ``info["terminal_observation"]``
 :class:`~realistic_indoor.envs.vector.BatchedExploreEnv` resets on the next step (Gymnasium's
 default). The adapter restarts finished sub-environments at once
 (:meth:`BatchedExploreEnv.restart`) and does what SB3's ``Monitor`` would: ``info["episode"]``
-(return, length, seconds, final coverage) when an episode ends, ``TimeLimit.truncated``, and
-``coverage``.
+(return, length, seconds, final coverage) when an episode ends and ``TimeLimit.truncated``; each
+sub-environment's ``info`` also holds what the single environment's does (``coverage``,
+``rewards``, ``path_length_m``, ...).
 """
 
 from __future__ import annotations
@@ -126,10 +127,8 @@ class BatchedVecEnv(VecEnv):
             i = lo + k
             self._returns[i] += reward[k]
             self._lengths[i] += 1
-            item: dict[str, Any] = {
-                "coverage": float(info["coverage"][k]),
-                "TimeLimit.truncated": bool(truncated[k] and not terminated[k]),
-            }
+            item: dict[str, Any] = _env_info(info, k)  # what the single env's info holds
+            item["TimeLimit.truncated"] = bool(truncated[k] and not terminated[k])
             if terminated[k] or truncated[k]:
                 item["episode"] = {
                     "r": round(float(self._returns[i]), 6),  # as SB3's Monitor rounds it
@@ -169,3 +168,13 @@ class BatchedVecEnv(VecEnv):
 
     def _group_of(self, i: int) -> Any:
         return self.groups[int(np.searchsorted(self._bounds, i, side="right")) - 1]
+
+
+def _env_info(info: dict[str, Any], k: int) -> dict[str, Any]:
+    """Sub-environment ``k``'s part of a native vector env's ``info`` (arrays and ``_key`` masks)."""
+    out: dict[str, Any] = {}
+    for key, value in info.items():
+        if key.startswith("_"):
+            continue
+        out[key] = {n: v[k].item() for n, v in value.items()} if isinstance(value, dict) else value[k].item()
+    return out

@@ -52,9 +52,8 @@ def make_vec_env(config: PPOConfig) -> Any:
     ``vec_env="batched"``: the ids' native vector environments (one compiled step each, in this
     process) behind :class:`~realistic_indoor.agents.rl.batched_vec_env.BatchedVecEnv`, the ids
     taking the ``n_envs`` sub-environments in turn, numbered as the other two number them: with
-    one seed all three step the same episodes (ids without one would fall back to
-    ``"dummy"``; every registered id has one). Otherwise one Gymnasium environment per sub-environment, in sub-processes
-    (``"subproc"``) or in this process (``"dummy"``).
+    one seed all three step the same episodes. Otherwise one Gymnasium environment per
+    sub-environment, in sub-processes (``"subproc"``) or in this process (``"dummy"``).
     """
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 

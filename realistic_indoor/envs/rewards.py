@@ -3,7 +3,11 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
 
 from realistic_indoor.errors import ConfigError
 
@@ -51,6 +55,11 @@ def reward_terms(new_area_m2: float, collided: bool, victims_found: int | None =
     return terms
 
 
-def weighted_sum(weights: RewardWeights, terms: dict[str, float]) -> float:
-    """The reward: the sum of each term times its weight."""
-    return float(sum(getattr(weights, name) * value for name, value in terms.items()))
+def weighted_sum(weights: RewardWeights, terms: Mapping[str, Any]) -> Any:
+    """The reward: the sum of each term times its weight, in the order of ``terms``.
+
+    Terms that are floats give a float; terms that are arrays (one value per sub-environment of
+    a vector environment) give an array, summed in the same order, hence the same values.
+    """
+    total = sum(getattr(weights, name) * value for name, value in terms.items())
+    return float(total) if np.ndim(total) == 0 else total

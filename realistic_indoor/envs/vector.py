@@ -17,9 +17,11 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
+from realistic_indoor.checks import require_int
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
+from realistic_indoor.envs.rewards import weighted_sum
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
@@ -93,8 +95,7 @@ class BatchedExploreEnv(VectorEnv):
         preset: str | None = None,
         **overrides: Any,
     ) -> None:
-        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
-            raise ConfigError(f"num_envs must be an integer >= 1, got {num_envs!r}")
+        require_int("BatchedExploreEnv", "num_envs", num_envs, 1)
         num_envs = int(num_envs)
         if max_episode_steps is not None:
             overrides = {"max_steps": max_episode_steps, **overrides}
@@ -144,7 +145,6 @@ class BatchedExploreEnv(VectorEnv):
         self._path = np.zeros(n)
         self._collisions = np.zeros(n, dtype=np.int64)
         self._autoreset = np.zeros(n, dtype=bool)
-        self._weights = np.array([getattr(c.rewards, name) for name in self.term_names])
         self._rngs: list[np.random.Generator] = []
 
     # -- the Gymnasium API ----------------------------------------------------------------------
@@ -194,11 +194,8 @@ class BatchedExploreEnv(VectorEnv):
         self._steps += stepped
         self._path += self._motion * stepped
         self._collisions += (self._terms[:, 1] > 0) & stepped
-        weighted = self._terms * self._weights
-        total = weighted[:, 0]
-        for j in range(1, weighted.shape[1]):  # the single env's order of sums
-            total = total + weighted[:, j]
-        reward = np.where(stepped, total, 0.0)
+        terms = {name: self._terms[:, j] for j, name in enumerate(self.term_names)}
+        reward = np.where(stepped, weighted_sum(self.config.rewards, terms), 0.0)
         terminated = stepped & self._done()
         truncated = stepped & (self._steps >= self.config.max_steps)  # also when terminated, as TimeLimit
         self._autoreset = terminated | truncated
@@ -283,8 +280,8 @@ class BatchedExploreEnv(VectorEnv):
             if len(seeds) != self.num_envs:
                 raise ConfigError(f"reset(seed=...) needs {self.num_envs} seeds, got {len(seeds)}")
         for s in seeds:
-            if s is not None and (isinstance(s, bool) or not isinstance(s, (int, np.integer)) or s < 0):
-                raise ConfigError(f"reset(seed=...) takes integers >= 0 (or None in a list), got {seed!r}")
+            if s is not None:
+                require_int("BatchedExploreEnv.reset", "seed", s, 0)
         return seeds
 
     def _reset_one(self, k: int) -> None:

@@ -1,0 +1,41 @@
+"""scripts/twin_gap_by_size.py: the generator diagnostic runs end to end and refuses bad input."""
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import pytest
+
+SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "twin_gap_by_size.py"
+
+
+def _load():
+    spec = importlib.util.spec_from_file_location("twin_gap_by_size", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize(
+    ("area", "expected"),
+    [(349.0, "< 1,200 m2"), (1200.0, "1,200-3,000 m2"), (2999.9, "1,200-3,000 m2"), (7276.0, ">= 3,000 m2")],
+)
+def test_band_splits_at_1200_and_3000_m2(area, expected):
+    assert _load().band(area) == expected
+
+
+def test_a_small_school_prints_the_gap_and_room_tables(real_plans_dir, capsys):
+    plans = str(real_plans_dir / "school" / "Lamuniere1_updated.xml")  # 351 m2
+    assert _load().main([plans, "--type", "school", "--twins", "2", "--workers", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "wall on 1 school plans, 2 twin(s) each (seeds 1000 on)" in out
+    assert "twin - real coverage AUC:" in out
+    assert "< 1,200 m2" in out and "over 1 plans" in out
+    assert "rooms/ha" in out and "medium" in out
+
+
+def test_bad_twin_count_is_one_line_and_exit_2(real_plans_dir, capsys):
+    assert _load().main([str(real_plans_dir / "school"), "--twins", "0"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["error: --twins must be >= 1, not 0"]

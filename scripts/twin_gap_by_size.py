@@ -51,6 +51,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument("--twins", type=int, default=3, help="twins per plan (default 3)")
     p.add_argument("--seed", type=int, default=1000, help="seed of the first twin (default 1000)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: one per core)")
+    p.add_argument("--per-plan", action="store_true", help="also list every plan: area, real and twins' AUC")
     return p.parse_args(argv)
 
 
@@ -93,6 +94,8 @@ def report(args: argparse.Namespace, folder: Path) -> None:
     auc = _coverage_auc(args, explore_id(args.type), [p.path for p in plans], list(shapes))
     print(f"{args.agent} on {len(plans)} {args.type} plans, {args.twins} twin(s) each (seeds {args.seed} on)")
     _gap_table(plans, twins, shapes, auc)
+    if args.per_plan:
+        _plan_table(plans, twins, shapes, auc)
     _room_table(plans, {p.name: [load(t) for t in twins[p.name]] for p in plans}, args.type)
 
 
@@ -126,6 +129,14 @@ def _gap_table(plans, twins, shapes, auc) -> None:
         print(f"  {name:16s} {statistics.mean(values):+.3f} over {len(values)} plans")
     for name, values in sorted(by_shape.items(), key=lambda kv: -len(kv[1])):
         print(f"  shape {name:16s} {statistics.mean(values):+.3f} over {len(values)} twins")
+
+
+def _plan_table(plans, twins, shapes, auc) -> None:
+    """Every plan by floor area: its coverage AUC, and each twin's with the twin's shape."""
+    print("\nper plan (by floor area): real AUC | twins' AUC (shape)")
+    for p in sorted(plans, key=lambda p: p.building.area):
+        made = ", ".join(f"{auc[str(t)]:.2f} ({shapes[t]})" for t in twins[p.name])
+        print(f"  {p.name[:32]:32s} {p.building.area:7,.0f} m2  {auc[p.path]:.2f} | {made}")
 
 
 def _room_table(plans, twins, building_type: str) -> None:

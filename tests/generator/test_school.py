@@ -62,3 +62,41 @@ def test_school__small_rooms_outnumber_classrooms_with_the_papers_model(samples)
     small = sum(r.label is SemanticLabel.SMALL for b in samples("school", "paper") for r in b.rooms)
     medium = sum(r.label is SemanticLabel.MEDIUM for b in samples("school", "paper") for r in b.rooms)
     assert small > 2 * medium
+
+
+def _large_schools(area_m2, seeds=range(30)):
+    import numpy as np
+
+    from realistic_indoor.generator import make_generator
+
+    generate = make_generator("school", area_m2=area_m2)
+    return [generate(np.random.default_rng(seed)) for seed in seeds]
+
+
+def test_large_schools__get_a_canteen_and_an_auditorium_beside_the_gym_often():
+    # the shared real schools: 12 of 26 of 1,500 m2 and more have a canteen, 7 of 17 of 2,700 m2
+    # and more an auditorium; both come in certainly from 6,000 m2 where they find a place
+    schools = _large_schools(9000.0)
+    for function, low_m2, high_m2 in (("canteen", 200.0, 400.0), ("conference", 450.0, 850.0)):
+        annexes = [
+            (b, r)
+            for b in schools
+            for r in b.rooms
+            if r.function == function
+            and r.label is SemanticLabel.BIG
+            and low_m2 - 1.0 <= r.area <= high_m2 + 1.0
+        ]
+        assert len({id(b) for b, _ in annexes}) >= 0.3 * len(schools), function
+        for b, r in annexes:  # reached from a corridor or hall, like the gym
+            assert any(d.other(r.id) and b.room(d.other(r.id)).label in (C, H) for d in b.doors_of[r.id])
+
+
+def test_small_schools__get_no_canteen_or_auditorium_annex():
+    for b in _large_schools(1400.0, range(15)):
+        assert not any(r.function in ("canteen", "conference") and r.area >= 300.0 for r in b.rooms)
+
+
+def test_large_schools__keep_their_floor_area_within_two_percent():
+    for area_m2 in (3500.0, 5000.0, 9000.0):
+        for b in _large_schools(area_m2, range(12)):
+            assert abs(b.area / area_m2 - 1.0) <= 0.02, (area_m2, b.metadata)

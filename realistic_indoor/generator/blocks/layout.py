@@ -8,12 +8,13 @@ from typing import TYPE_CHECKING
 from realistic_indoor.generator.blocks.compose import compose
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
+from realistic_indoor.generator.blocks.style import MORE_ANNEX_SHARE
 from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
-from realistic_indoor.generator.wings.annex import add_annex, draw_annex
+from realistic_indoor.generator.wings.annex import add_annex, comes_in, draw_annex
 
 if TYPE_CHECKING:
     import numpy as np
@@ -37,9 +38,11 @@ def block_plan(
     """Lay out a compact building of about ``area_m2`` as one block of bars.
 
     An annex (a school's gym, a big room as the real school plans label it) takes up to a quarter
-    of the area (small buildings may have none, see ``draw_annex``); where it finds no free
-    place beside the block, the block is drawn again (three tries), then laid out over the
-    whole area.
+    of the area (small buildings may have none, see ``draw_annex``), and large buildings may
+    get the style's ``more_annexes`` beside it (an auditorium, a canteen). Where they find no
+    free place beside the block at their full size, the block is drawn again with the annex
+    alone (three tries); then (three tries) the annex may come out smaller, and last the block
+    is laid out over the whole area.
 
     Returns:
         The plan (rooms, doors, functions) and facts about the layout for the metadata
@@ -47,14 +50,24 @@ def block_plan(
         with ``"+court"`` when a core section is a courtyard, for one block; ``"L"``, ``"T"`` or
         ``"U"`` for a main bar with wings).
     """
+    if blocks.annex_area_m2 is not None:
+        style = replace(style, annex_area_m2=blocks.annex_area_m2)
     annex_m2, style = draw_annex(rng, area_m2, style)
+    gym = (style.annex, annex_m2)
+    more = _more_annexes(rng, area_m2, blocks) if annex_m2 else []
+    # (annexes, whether the first may shrink, draws): full sizes first, so the floor area holds
+    tries = [([gym, *more], False, 1)] if more else []
+    tries += [([gym], False, 1), ([gym], True, 3)]
     laid = None
-    for _ in range(3 if annex_m2 else 0):
-        laid = _lay_out(rng, area_m2, model, style, blocks, annex_m2)
+    for annexes, shrink, draws in tries if annex_m2 else []:
+        for _ in range(draws):
+            laid = _lay_out(rng, area_m2, model, style, blocks, annexes, shrink)
+            if laid is not None:
+                break
         if laid is not None:
             break
     if laid is None:
-        laid = _lay_out(rng, area_m2, model, style, blocks, 0.0)
+        laid = _lay_out(rng, area_m2, model, style, blocks, [], False)
     plan, shape = laid
     pairs = model.structures.connected_room_pairs
     scale = door_habit_scale(model, rng)
@@ -71,6 +84,22 @@ def block_plan(
         door_scale=scale,
     )
     return plan, {"shape": shape}
+
+
+def _more_annexes(rng: np.random.Generator, area_m2: float, blocks: BlockStyle) -> list[tuple[str, float]]:
+    """The style's further annexes a building of ``area_m2`` (m2) gets: ``(function, area m2)``.
+
+    Nothing is drawn for an annex below its first floor area (smaller buildings keep their
+    draws).
+    """
+    out = []
+    for function, area_range, from_m2 in blocks.more_annexes:
+        if area_m2 <= from_m2[0]:
+            continue
+        area = min(rng.uniform(*area_range), MORE_ANNEX_SHARE * area_m2)
+        if comes_in(rng, area_m2, from_m2):
+            out.append((function, area))
+    return out
 
 
 def _shape_name(s: Section) -> str:
@@ -114,12 +143,16 @@ def _lay_out(
     model: BuildingTypeModel,
     style: WingStyle,
     blocks: BlockStyle,
-    annex_m2: float,
+    annexes: list[tuple[str, float]],
+    shrink: bool,
 ) -> tuple[Plan, str] | None:
-    """Rooms and corridors of the blocks and the annex, and the footprint's shape name.
+    """Rooms and corridors of the blocks and the annexes, and the footprint's shape name.
 
-    ``None`` if the annex found no place.
+    ``annexes`` are ``(function, area m2)``, the style's annex first; with ``shrink`` the first
+    may come out smaller where it does not fit whole (see ``add_annex``), the others never do.
+    ``None`` if one found no place.
     """
+    annex_m2 = sum(area for _, area in annexes)
     dims = layout_dims(rng, model, style)
     dims = replace(dims, corridor=round(dims.corridor * blocks.corridor_scale))
     area = round(area_to_units(area_m2 - annex_m2))
@@ -150,9 +183,15 @@ def _lay_out(
         widen_last_room=True,
     )
     lobby = exterior_walls(plan, 0) if plan.rooms and plan.rooms[0].label is H else []
-    if (
-        annex_m2
-        and add_annex(plan, rng, style, annex_m2, label=B, keep_clear=lobby, room_m=blocks.annex_room_m) < 0
-    ):
-        return None
+    for k, (function, area) in enumerate(annexes):
+        kind = {
+            "function": function,
+            "service_rooms": k == 0,
+            "scales": (1.0, 0.8, 0.65) if shrink and k == 0 else (1.0,),
+        }
+        if (
+            add_annex(plan, rng, style, area, label=B, keep_clear=lobby, room_m=blocks.annex_room_m, **kind)
+            < 0
+        ):
+            return None
     return plan, shape

@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 
     from realistic_indoor.generator.wings.style import WingStyle
 
-__all__ = ["add_annex", "draw_annex"]
+__all__ = ["add_annex", "comes_in", "draw_annex"]
 
 
 def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tuple[float, WingStyle]:
@@ -33,11 +33,20 @@ def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tu
     if not style.annex:
         return 0.0, style
     area = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2)
-    low, high = style.annex_from_m2
-    if area_m2 >= high or rng.random() < (area_m2 - low) / (high - low):
+    if comes_in(rng, area_m2, style.annex_from_m2):
         return area, style
     required = tuple(f for f in style.required_functions if f != style.annex)
     return 0.0, replace(style, required_functions=required)
+
+
+def comes_in(rng: np.random.Generator, area_m2: float, from_m2: tuple[float, float]) -> bool:
+    """Whether a building of ``area_m2`` (m2) gets something that comes in over ``from_m2``.
+
+    Certainly from the second floor area on; below it, with a probability growing linearly
+    from 0 at the first (a random number is drawn only then).
+    """
+    low, high = from_m2
+    return area_m2 >= high or rng.random() < (area_m2 - low) / (high - low)
 
 
 def _outward(plan: Plan, i: int, w: Contact) -> int:
@@ -74,20 +83,26 @@ def add_annex(
     label: SemanticLabel = SemanticLabel.HALL,
     keep_clear: Sequence[Contact] = (),
     room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5),
+    function: str | None = None,
+    service_rooms: bool = True,
+    scales: tuple[float, ...] = (1.0, 0.8, 0.65),
 ) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 
-    Its far side holds a strip of small rooms that open onto it (changing rooms, storage).
+    Its far side holds a strip of small rooms that open onto it (changing rooms, storage),
+    unless ``service_rooms`` is false.
 
     Tries the facades of corridors and halls in random order, each with the annex's long side
     along or across the facade and centred on it or flush with either end, and keeps the first
     that overlaps nothing and whose back lies against the building all along (no pocket of void
-    enclosed behind it); where nothing fits, a smaller annex (80%, then 65%) is tried.
+    enclosed behind it); where nothing fits, a smaller annex is tried (``scales`` of the area in
+    turn: 80%, then 65%, by default).
 
     ``label`` is the annex's semantic label: a hall (the paper's convention) or a big room (as
     the real school plans label their gyms). The annex never stands against a wall of
     ``keep_clear`` (the lobby's facade, kept for the main entrance). ``room_m`` is the range of
     the depth of the rooms on its far side and the length along it each takes (m).
+    ``function`` names the annex (default: the style's ``annex``).
 
     Returns:
         The annex's room index, or -1 if there was no free place (the building is then smaller
@@ -102,13 +117,16 @@ def add_annex(
         if w.length >= RULES.needed(RULES.hall)
     ]
     order = [spots[int(k)] for k in rng.permutation(len(spots))]
-    for scale in (1.0, 0.8, 0.65):
+    for scale in scales:
         long_side = math.sqrt(area_m2 * scale * ratio) * UNITS_PER_M
         short_side = area_to_units(area_m2 * scale) / long_side
         for i, w in order:
             box = _fit(plan, w, _outward(plan, i, w), long_side, short_side)
             if box is not None and not any(_against(box, c) for c in keep_clear):
-                return _place(plan, rng, style, box, w.axis, _outward(plan, i, w), label, room_m)
+                room = PlanRoom([box], label, function=function or style.annex, role="annex")
+                if not service_rooms:
+                    return plan.add(room)
+                return _place(plan, rng, style, room, w.axis, _outward(plan, i, w), room_m)
     return -1
 
 
@@ -139,14 +157,13 @@ def _place(
     plan: Plan,
     rng: np.random.Generator,
     style: WingStyle,
-    box: Rect,
+    room: PlanRoom,
     axis: str,
     sign: int,
-    label: SemanticLabel,
     room_m: tuple[tuple[float, float], float],
 ) -> int:
-    """The annex hall, with a strip of small service rooms along its far side opening onto it."""
-    x0, y0, x1, y1 = box
+    """The annex ``room`` (one rect: its box), with small service rooms along its far side opening onto it."""
+    x0, y0, x1, y1 = room.rects[0]
     depths, length = room_m
     depth = to_units(rng.uniform(*depths))
     if axis == "v":
@@ -155,7 +172,8 @@ def _place(
     else:
         hall = (x0, y0, x1, y1 - depth) if sign > 0 else (x0, y0 + depth, x1, y1)
         strip, along = ((y1 - depth, y1) if sign > 0 else (y0, y0 + depth)), (x0, x1)
-    annex = plan.add(PlanRoom([hall], label, function=style.annex, role="annex"))
+    room.rects[0] = hall
+    annex = plan.add(room)
     n = max(2, (along[1] - along[0]) // to_units(length))
     cuts = [along[0] + (along[1] - along[0]) * k // n for k in range(n + 1)]
     for k in range(n):

@@ -11,9 +11,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from realistic_indoor.sim._edt import column_squares, row_distances
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
-__all__ = ["fill_cover", "reachable_from", "skip_and_clearance"]
+__all__ = ["fill_cover", "reachable_from", "skip_and_clearance", "skip_and_clearance_of"]
 
 
 @njit(cache=True, nogil=True)
@@ -134,17 +135,55 @@ def skip_and_clearance(grid, dist, safety, skip_wall, skip_outside, half, res): 
     h, w = grid.shape
     skip = np.empty((h, w), dtype=np.uint8)
     clearance = np.empty((h, w), dtype=np.float32)
+    for r in range(h):
+        _skip_row(grid[r], dist[r], skip[r], clearance[r], safety, skip_wall, skip_outside, half, res)
+    return skip, clearance
+
+
+@njit(cache=True, nogil=True)
+def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # pragma: no cover
+    """:func:`skip_and_clearance` straight from the raster, its distance field never stored.
+
+    The distance transform's row pass (:func:`~realistic_indoor.sim._edt.row_distances`)
+    fills one row at a time, which becomes that row of both fields at once; the clearance is
+    written over the column pass's squares, whose row is no longer needed.
+
+    Args:
+        grid: ``(H, W)`` uint8 raster codes; free cells are :data:`RASTER_FREE`, others obstacles.
+        safety: As for :func:`skip_and_clearance`.
+        skip_wall: As for :func:`skip_and_clearance`.
+        skip_outside: As for :func:`skip_and_clearance`.
+        half: As for :func:`skip_and_clearance`.
+        res: As for :func:`skip_and_clearance`.
+
+    Returns:
+        ``(skip uint8, clearance float32 m)``, both ``(H, W)``: the values
+        :func:`skip_and_clearance` gives with ``distance_field(grid != RASTER_FREE)``.
+    """
+    h, w = grid.shape
+    squares = column_squares(grid, RASTER_FREE)
+    skip = np.empty((h, w), dtype=np.uint8)
+    dist = np.empty(w, dtype=np.float32)
+    stack_at = np.empty(w, dtype=np.int64)
+    stack_height = np.empty(w)
+    for r in range(h):
+        row_distances(squares[r], dist, stack_at, stack_height)
+        _skip_row(grid[r], dist, skip[r], squares[r], safety, skip_wall, skip_outside, half, res)
+    return skip, squares
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _skip_row(codes, dist, skip, clearance, safety, skip_wall, skip_outside, half, res):  # pragma: no cover
+    """One row of :func:`skip_and_clearance`: ``skip`` and ``clearance`` overwritten."""
     top = np.float32(skip_wall - 1)
     zero = np.float32(0.0)
-    for r in range(h):
-        for c in range(w):
-            d = dist[r, c]
-            code = grid[r, c]
-            if code == RASTER_WALL:
-                skip[r, c] = skip_wall
-            elif code == RASTER_OUTSIDE:
-                skip[r, c] = skip_outside
-            else:
-                skip[r, c] = np.uint8(min(max(np.floor(d - safety), zero), top))
-            clearance[r, c] = max(d - half, zero) * res
-    return skip, clearance
+    for c in range(codes.shape[0]):
+        d = dist[c]
+        code = codes[c]
+        if code == RASTER_WALL:
+            skip[c] = skip_wall
+        elif code == RASTER_OUTSIDE:
+            skip[c] = skip_outside
+        else:
+            skip[c] = np.uint8(min(max(np.floor(d - safety), zero), top))
+        clearance[c] = max(d - half, zero) * res

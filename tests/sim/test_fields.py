@@ -13,6 +13,21 @@ def test_distance_field__is_the_exact_euclidean_distance_transform(rng):
     assert np.abs(dist - distance_transform_edt(~noise)).max() < 1e-4
 
 
+@pytest.mark.parametrize("share", [0.0005, 0.01, 0.3, 0.9, 1.0])
+def test_distance_field__equals_scipys_distances_to_the_last_bit(rng, share):
+    obstacle = rng.random((97, 131)) < share
+    obstacle[40:60, :] = False  # a band free across the whole width: no obstacle in its rows
+    want = distance_transform_edt(~obstacle).astype(np.float32)
+    assert np.array_equal(distance_field(obstacle), want)
+
+
+def test_distance_field__one_obstacle_cell_in_one_column_only():
+    obstacle = np.zeros((40, 7), dtype=bool)
+    obstacle[39, 6] = True  # every other column has none: its squares are 1e20
+    want = distance_transform_edt(~obstacle).astype(np.float32)
+    assert np.array_equal(distance_field(obstacle), want)
+
+
 def test_distance_field__scales_cells_to_metres():
     obstacle = np.zeros((5, 9), dtype=bool)
     obstacle[2, 0] = True

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from realistic_indoor.sim._world_kernels import reachable_from, skip_and_clearance
+from realistic_indoor.sim._world_kernels import reachable_from, skip_and_clearance, skip_and_clearance_of
 from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 from realistic_indoor.sim.raycast import _SAFETY, _SKIP_OUTSIDE, _SKIP_WALL
@@ -69,3 +69,26 @@ def test_reachable_from__a_comb_with_more_teeth_than_the_first_seed_stack_holds(
     want = grid == RASTER_FREE
     want[3, 1] = False
     assert np.array_equal(got, want)
+
+
+@pytest.mark.parametrize(("seed", "free_share"), [(0, 0.9), (1, 0.62), (2, 0.99), (3, 1.0), (4, 0.0)])
+def test_skip_and_clearance_of__equals_skip_and_clearance_of_the_distance_field(seed, free_share):
+    grid = _random_grid(seed, (57, 91), free_share)
+    constants = (np.float32(_SAFETY), _SKIP_WALL, _SKIP_OUTSIDE, np.float32(0.5), np.float32(0.05))
+    want_skip, want_clearance = skip_and_clearance(grid, distance_field(grid != RASTER_FREE), *constants)
+    skip, clearance = skip_and_clearance_of(grid, *constants)
+    assert np.array_equal(skip, want_skip) and np.array_equal(clearance, want_clearance)
+    assert clearance.dtype == np.float32 and skip.dtype == np.uint8
+
+
+def test_skip_and_clearance_of__a_generated_office_equals_scipys_distances():
+    from realistic_indoor.generator import generate
+    from realistic_indoor.sim.raster import rasterize
+
+    grid = rasterize(generate("office", area_m2=600.0, seed=4)).grid
+    dist = ndimage.distance_transform_edt(grid == RASTER_FREE).astype(np.float32)
+    constants = (np.float32(_SAFETY), _SKIP_WALL, _SKIP_OUTSIDE, np.float32(0.5), np.float32(0.05))
+    want_skip, want_clearance = skip_and_clearance(grid, dist, *constants)
+    skip, clearance = skip_and_clearance_of(grid, *constants)
+    assert np.array_equal(skip, want_skip) and np.array_equal(clearance, want_clearance)
+    assert skip[grid == RASTER_FREE].max() >= 20  # long jumps: distances of many cells

@@ -92,3 +92,19 @@ def test_skip_and_clearance_of__a_generated_office_equals_scipys_distances():
     skip, clearance = skip_and_clearance_of(grid, *constants)
     assert np.array_equal(skip, want_skip) and np.array_equal(clearance, want_clearance)
     assert skip[grid == RASTER_FREE].max() >= 20  # long jumps: distances of many cells
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_reachable_from__components_of_a_generated_office_with_rubble_are_scipys(seed):
+    from realistic_indoor.generator import generate
+    from realistic_indoor.sim.raster import rasterize
+
+    grid = rasterize(generate("office", area_m2=600.0, seed=seed), resolution_m=0.1).grid.copy()
+    rng = np.random.default_rng(seed)
+    grid[(rng.random(grid.shape) < 0.3) & (np.arange(grid.shape[1]) < grid.shape[1] // 2)] = RASTER_WALL
+    labels, n = ndimage.label(grid == RASTER_FREE)
+    sizes = np.bincount(labels.ravel())
+    for label in [*range(1, 40), *np.argsort(sizes[1:])[-5:] + 1]:  # pockets, and the largest parts
+        start = np.argwhere(labels == label)[0]
+        assert np.array_equal(reachable_from(grid, int(start[0]), int(start[1])), labels == label)
+    assert n > 100 and sizes[1:].max() > 10_000

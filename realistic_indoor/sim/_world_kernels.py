@@ -14,7 +14,75 @@ from numba import njit
 from realistic_indoor.sim._edt import column_squares, row_distances
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
-__all__ = ["fill_cover", "reachable_from", "skip_and_clearance", "skip_and_clearance_of"]
+__all__ = ["fill_cover", "reachable_from", "ring_spans", "skip_and_clearance", "skip_and_clearance_of"]
+
+
+@njit(cache=True, nogil=True)
+def ring_spans(start, end, ring_first, ring_size, h, w):  # pragma: no cover - compiled
+    """The spans of cells whose centres lie inside each ring, row by row (a scanline fill).
+
+    A ring covers row ``r`` where its edges cross the line through the row's cell centres;
+    an edge from ``y0`` to ``y1`` crosses the rows ``ceil(min) <= r < ceil(max)``. The
+    crossings of one ring on one row, in increasing ``x``, pair up into spans (even-odd).
+
+    Args:
+        start: ``(E, 2)`` float64 first vertex of each edge, in cell-centre units (cell
+            ``(r, c)``'s centre is ``(c, r)``).
+        end: ``(E, 2)`` float64 second vertex of each edge.
+        ring_first: ``(R,)`` int64 index of each ring's first edge; a ring's edges are
+            consecutive.
+        ring_size: ``(R,)`` int64 number of edges of each ring.
+        h: Rows of the grid.
+        w: Columns of the grid.
+
+    Returns:
+        ``(row, col_a, col_b, ring)`` int64 arrays, one entry per span: its row, its first
+        column and the column after its last (both in ``[0, w]``) and its ring, ordered by
+        ring, then row, then column.
+    """
+    n_edges = start.shape[0]
+    r0 = np.empty(n_edges, dtype=np.int64)
+    r1 = np.empty(n_edges, dtype=np.int64)
+    crossings = 0
+    for e in range(n_edges):
+        lo, hi = min(start[e, 1], end[e, 1]), max(start[e, 1], end[e, 1])
+        r0[e] = min(max(np.ceil(lo), 0.0), h)
+        r1[e] = min(max(np.ceil(hi), 0.0), h)
+        crossings += r1[e] - r0[e]
+    n = crossings // 2
+    rows = np.empty(n, dtype=np.int64)
+    col_a = np.empty(n, dtype=np.int64)
+    col_b = np.empty(n, dtype=np.int64)
+    ring = np.empty(n, dtype=np.int64)
+    xs = np.empty(max(ring_size.max(), 1) if ring_size.shape[0] else 1)
+    k = 0
+    for i in range(ring_first.shape[0]):
+        first, last = ring_first[i], ring_first[i] + ring_size[i]
+        for row in range(r0[first:last].min(), r1[first:last].max()):
+            m = _row_crossings(start, end, r0, r1, first, last, row, xs)
+            for j in range(0, m - 1, 2):
+                rows[k], ring[k] = row, i
+                col_a[k] = min(max(np.ceil(xs[j]), 0.0), w)
+                col_b[k] = min(max(np.ceil(xs[j + 1]), 0.0), w)
+                k += 1
+    return rows[:k], col_a[:k], col_b[:k], ring[:k]
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _row_crossings(start, end, r0, r1, first, last, row, xs):  # pragma: no cover - compiled
+    """The ``x`` where edges ``first..last-1`` cross ``row``, sorted into ``xs``; their number."""
+    m = 0
+    for e in range(first, last):
+        if r0[e] <= row < r1[e]:
+            sx, sy, ex, ey = start[e, 0], start[e, 1], end[e, 0], end[e, 1]
+            x = sx + (row - sy) * (ex - sx) / (ey - sy)
+            j = m
+            while j > 0 and xs[j - 1] > x:  # insertion sort: a few crossings per row
+                xs[j] = xs[j - 1]
+                j -= 1
+            xs[j] = x
+            m += 1
+    return m
 
 
 @njit(cache=True, nogil=True)

@@ -6,7 +6,12 @@ import numpy as np
 import pytest
 from scipy import ndimage
 
-from realistic_indoor.sim._world_kernels import reachable_from, skip_and_clearance, skip_and_clearance_of
+from realistic_indoor.sim._world_kernels import (
+    reachable_from,
+    ring_spans,
+    skip_and_clearance,
+    skip_and_clearance_of,
+)
 from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 from realistic_indoor.sim.raycast import _SAFETY, _SKIP_OUTSIDE, _SKIP_WALL
@@ -108,3 +113,45 @@ def test_reachable_from__components_of_a_generated_office_with_rubble_are_scipys
         start = np.argwhere(labels == label)[0]
         assert np.array_equal(reachable_from(grid, int(start[0]), int(start[1])), labels == label)
     assert n > 100 and sizes[1:].max() > 10_000
+
+
+def _numpy_spans(start, end, first, sizes, h, w):
+    """The spans as commit ada2453 found them: every crossing with NumPy, then one lexsort."""
+    r0 = np.clip(np.ceil(np.minimum(start[:, 1], end[:, 1])), 0, h).astype(np.int64)
+    r1 = np.clip(np.ceil(np.maximum(start[:, 1], end[:, 1])), 0, h).astype(np.int64)
+    count = r1 - r0
+    edge = np.flatnonzero(count > 0)
+    count = count[edge]
+    e = np.repeat(edge, count)
+    rows = np.repeat(r0[edge], count) + (np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count))
+    sx, sy, ex, ey = start[e, 0], start[e, 1], end[e, 0], end[e, 1]
+    x = sx + (rows - sy) * (ex - sx) / (ey - sy)
+    ring = np.repeat(np.arange(len(sizes)), sizes)[e]
+    order = np.lexsort((x, rows, ring))
+    x, rows, ring = x[order], rows[order], ring[order]
+    col_a = np.clip(np.ceil(x[0::2]), 0, w).astype(np.int64)
+    col_b = np.clip(np.ceil(x[1::2]), 0, w).astype(np.int64)
+    return rows[0::2], col_a, col_b, ring[0::2]
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_ring_spans__equal_numpys_crossings_of_random_rings(seed):
+    rng = np.random.default_rng(seed)
+    rings = []
+    for _ in range(40):  # star-shaped rings of 3 to 12 vertices, some reaching off the grid
+        n = int(rng.integers(3, 13))
+        angles = np.sort(rng.uniform(0, 2 * np.pi, n))
+        radius = rng.uniform(1, 15, n)
+        centre = rng.uniform(-5, 65, 2)
+        rings.append(centre + np.stack([np.cos(angles), np.sin(angles)], axis=1) * radius[:, None])
+    rings.append(np.array([[2.0, 3.0], [20.0, 3.0], [20.0, 9.0], [2.0, 9.0]]))  # on the centre lines
+    sizes = np.array([len(r) for r in rings])
+    first = np.cumsum(sizes) - sizes
+    start = np.concatenate(rings)
+    nxt = np.arange(1, len(start) + 1)
+    nxt[first + sizes - 1] = first
+    end = np.ascontiguousarray(start[nxt])
+    got = ring_spans(start, end, first, sizes, 50, 60)
+    want = _numpy_spans(start, end, first, sizes, 50, 60)
+    assert all(np.array_equal(a, b) for a, b in zip(got, want, strict=True))
+    assert len(got[0]) > 300

@@ -12,11 +12,13 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["column_squares", "distance_to_mask", "row_distances"]
+__all__ = ["MAX_WIDTH", "column_squares", "distance_to_mask", "row_distances"]
 
 _INF = 1e20
 _FAR = np.float32(1e10)
 """Distance (cells) of a cell with no obstacle cell in reach: the square root of ``_INF``."""
+MAX_WIDTH = 2_000_000
+"""Widest grid (cells) whose row pass stays exact: its integer products then fit in an int64."""
 
 
 def distance_to_mask(obstacle: np.ndarray) -> np.ndarray:
@@ -37,7 +39,7 @@ def _edt(obstacle):  # pragma: no cover - compiled
     squares = column_squares(obstacle, False)
     out = np.empty((h, w), dtype=np.float32)
     stack_at = np.empty(w, dtype=np.int64)
-    stack_height = np.empty(w)
+    stack_height = np.empty(w, dtype=np.int64)
     for r in range(h):
         row_distances(squares[r], out[r], stack_at, stack_height)
     return out
@@ -54,8 +56,13 @@ def column_squares(cells, free_value):  # pragma: no cover - compiled
     Returns:
         ``(H, W)`` float32: 0 on obstacle cells, the square of the distance along the column
         to the nearest obstacle cell elsewhere (float32 arithmetic), 1e20 in a column without one.
+
+    Raises:
+        ValueError: If the grid is more than :data:`MAX_WIDTH` cells wide.
     """
     h, w = cells.shape
+    if w > MAX_WIDTH:
+        raise ValueError("the distance transform takes grids at most 2,000,000 cells wide")
     g = np.empty((h, w), dtype=np.float32)
     for c in range(w):
         g[0, c] = _INF if cells[0, c] == free_value else 0.0
@@ -81,16 +88,17 @@ def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - c
     """One row of the distance transform, from its cells' :func:`column_squares`.
 
     Each run of free cells is solved on its own, between the obstacle cells that bound it: no
-    cell beyond them can be nearer. The lower envelope of the parabolas ``(q - p)² + g(p)`` is
-    built and read with products instead of the intersections' divisions; the squared
-    distances are whole numbers, so the result is the exact minimum either way.
+    cell beyond them can be nearer. A run whose cells all have the same column distance (the
+    middle of a room) has a closed form; other runs take the lower envelope of the parabolas
+    ``(q - p)² + g(p)``, built and read with integer products instead of the intersections'
+    divisions. The squared distances are whole numbers, so the result is the exact minimum.
 
     Args:
         squares: ``(W,)`` float32 row of :func:`column_squares` (0 on obstacle cells).
         out: ``(W,)`` float32, overwritten with the distances (cells): 0 on obstacle cells,
             1e10 where no obstacle cell is in reach.
         stack_at: ``(W,)`` int64 scratch: the envelope's parabolas' columns.
-        stack_height: ``(W,)`` float64 scratch: their ``g(p) + p²``.
+        stack_height: ``(W,)`` int64 scratch: their ``g(p) + p²``.
     """
     w = squares.shape[0]
     q = 0
@@ -102,19 +110,51 @@ def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - c
         first = q
         while q < w and squares[q] != 0.0:
             q += 1
-        _run_distances(squares, out, first, q - 1, max(first - 1, 0), min(q, w - 1), stack_at, stack_height)
+        if not _level_run(squares, out, first, q - 1):
+            _run_distances(
+                squares, out, first, q - 1, max(first - 1, 0), min(q, w - 1), stack_at, stack_height
+            )
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _level_run(squares, out, first, last):  # pragma: no cover - compiled
+    """Distances of run ``first..last`` if its cells share one finite column distance; else False.
+
+    Then a cell's nearest obstacle is along its column or the run's end cell beyond either
+    end (an obstacle, unless the run reaches the edge of the grid).
+    """
+    level = squares[first]
+    if level >= _INF:
+        return False
+    for p in range(first + 1, last + 1):
+        if squares[p] != level:
+            return False
+    w = squares.shape[0]
+    square = np.int64(level)
+    for q in range(first, last + 1):
+        best = square
+        if first > 0:
+            best = min(best, (q - first + 1) * (q - first + 1))
+        if last < w - 1:
+            best = min(best, (last + 1 - q) * (last + 1 - q))
+        out[q] = np.float32(np.sqrt(np.float64(best)))
+    return True
 
 
 @njit(cache=True, nogil=True, inline="always")
 def _run_distances(squares, out, first, last, lo, hi, at, height):  # pragma: no cover - compiled
-    """Distances of cells ``first..last`` from the parabolas of columns ``lo..hi``."""
+    """Distances of cells ``first..last`` from the parabolas of columns ``lo..hi``.
+
+    Integer arithmetic is exact while ``(g + p²) * W`` fits in an int64: up to grids
+    :data:`MAX_WIDTH` cells wide, which :func:`column_squares` checks.
+    """
     k = -1
-    below_at, below_h, top_at, top_h = 0, 0.0, 0, 0.0
+    below_at, below_h, top_at, top_h = 0, 0, 0, 0
     for p in range(lo, hi + 1):
         g = squares[p]
         if g >= _INF:
             continue
-        h = np.float64(g) + np.float64(p * p)
+        h = np.int64(g) + p * p
         # pop the top while the new parabola meets it before the top meets the one below it
         while k >= 1 and (h - top_h) * (top_at - below_at) <= (top_h - below_h) * (p - top_at):
             k -= 1
@@ -130,11 +170,11 @@ def _run_distances(squares, out, first, last, lo, hi, at, height):  # pragma: no
         return
     j = 0
     for q in range(first, last + 1):
-        best = height[j] + q * (q - 2.0 * at[j])
+        best = height[j] + q * (q - 2 * at[j])
         while j < k:
-            after = height[j + 1] + q * (q - 2.0 * at[j + 1])
+            after = height[j + 1] + q * (q - 2 * at[j + 1])
             if after > best:
                 break
             best = after
             j += 1
-        out[q] = np.float32(np.sqrt(best))
+        out[q] = np.float32(np.sqrt(np.float64(best)))

@@ -283,7 +283,7 @@ def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # 
     skip = np.empty((h, w), dtype=np.uint8)
     dist = np.empty(w, dtype=np.float32)
     stack_at = np.empty(w, dtype=np.int64)
-    stack_height = np.empty(w)
+    stack_height = np.empty(w, dtype=np.int64)
     for r in range(h):
         row_distances(squares[r], dist, stack_at, stack_height)
         _skip_row(grid[r], dist, skip[r], squares[r], safety, skip_wall, skip_outside, half, res)

@@ -40,3 +40,20 @@ def test_distance_field__without_obstacles_is_huge_and_needs_a_positive_resoluti
     assert np.all(distance_field(np.zeros((3, 4), dtype=bool), 0.5) == np.float32(0.5e10))
     with pytest.raises(ConfigError, match="resolution_m"):
         distance_field(np.zeros((3, 4), dtype=bool), 0.0)
+
+
+def test_distance_field__level_runs_and_envelope_runs_agree_with_scipy():
+    obstacle = np.ones((30, 200), dtype=bool)
+    obstacle[3:27, 1:199] = False  # one room: level runs in its middle rows
+    obstacle[3:27, 100] = True  # a wall across it, with a door
+    obstacle[12:15, 100] = False
+    obstacle[0:3, 40:43] = False  # a door in the top wall to the grid's edge: uneven runs
+    want = distance_transform_edt(~obstacle).astype(np.float32)
+    assert np.array_equal(distance_field(obstacle), want)
+
+
+def test_distance_field__refuses_grids_too_wide_for_exact_integers():
+    from realistic_indoor.sim._edt import MAX_WIDTH
+
+    with pytest.raises(ValueError, match="cells wide"):
+        distance_field(np.zeros((1, MAX_WIDTH + 1), dtype=bool))

@@ -89,6 +89,9 @@ def _row_crossings(start, end, r0, r1, first, last, row, xs):  # pragma: no cove
 def fill_cover(rows, col_a, col_b, weight, h, w, wall_weight):  # pragma: no cover - compiled
     """The raster's cells from the spans of its rings: outside, free (covered) or wall.
 
+    Row by row: the row's span ends, sorted by column, split it into stretches of equal
+    cover, each filled with its code at once.
+
     Args:
         rows: ``(S,)`` int64 row of each span.
         col_a: ``(S,)`` int64 first column of each span, in ``[0, w]``.
@@ -102,22 +105,65 @@ def fill_cover(rows, col_a, col_b, weight, h, w, wall_weight):  # pragma: no cov
         ``(h, w)`` uint8 raster codes: a cell covered by a total weight above 0 is free, at or
         above ``wall_weight`` a wall, else outside.
     """
-    diff = np.zeros((h, w + 1), dtype=np.int32)
-    for s in range(rows.shape[0]):
-        diff[rows[s], col_a[s]] += weight[s]
-        diff[rows[s], col_b[s]] -= weight[s]
+    row_start, order = _by_row(rows, h)
+    widest = 0
+    for r in range(h):
+        widest = max(widest, row_start[r + 1] - row_start[r])
+    at = np.empty(2 * widest, dtype=np.int64)
+    change = np.empty(2 * widest, dtype=np.int64)
     grid = np.empty((h, w), dtype=np.uint8)
     for r in range(h):
+        m = 0
+        for i in range(row_start[r], row_start[r + 1]):
+            s = order[i]
+            m = _insert_event(at, change, m, col_a[s], weight[s])
+            m = _insert_event(at, change, m, col_b[s], -weight[s])
         cover = 0
-        for c in range(w):
-            cover += diff[r, c]
-            if cover >= wall_weight:
-                grid[r, c] = RASTER_WALL
-            elif cover > 0:
-                grid[r, c] = RASTER_FREE
-            else:
-                grid[r, c] = RASTER_OUTSIDE
+        c = 0
+        for i in range(m):
+            if at[i] > c:
+                grid[r, c : at[i]] = _code(cover, wall_weight)
+                c = at[i]
+            cover += change[i]
+        grid[r, c:w] = _code(cover, wall_weight)
     return grid
+
+
+@njit(cache=True, nogil=True)
+def _by_row(rows, h):  # pragma: no cover - compiled
+    """Spans grouped by row (a counting sort): ``order[row_start[r]:row_start[r + 1]]`` are row ``r``'s."""
+    row_start = np.zeros(h + 1, dtype=np.int64)
+    for s in range(rows.shape[0]):
+        row_start[rows[s] + 1] += 1
+    for r in range(h):
+        row_start[r + 1] += row_start[r]
+    fill = row_start[:h].copy()
+    order = np.empty(rows.shape[0], dtype=np.int64)
+    for s in range(rows.shape[0]):
+        order[fill[rows[s]]] = s
+        fill[rows[s]] += 1
+    return row_start, order
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _insert_event(at, change, m, col, delta):  # pragma: no cover - compiled
+    """Insert a change of cover at column ``col`` into the ``m`` sorted events; their new number."""
+    j = m
+    while j > 0 and at[j - 1] > col:
+        at[j] = at[j - 1]
+        change[j] = change[j - 1]
+        j -= 1
+    at[j] = col
+    change[j] = delta
+    return m + 1
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _code(cover, wall_weight):  # pragma: no cover - compiled
+    """The raster code of a cell under ``cover``."""
+    if cover >= wall_weight:
+        return RASTER_WALL
+    return RASTER_FREE if cover > 0 else RASTER_OUTSIDE
 
 
 @njit(cache=True, nogil=True)

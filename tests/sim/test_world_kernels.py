@@ -7,6 +7,7 @@ import pytest
 from scipy import ndimage
 
 from realistic_indoor.sim._world_kernels import (
+    fill_cover,
     reachable_from,
     ring_spans,
     skip_and_clearance,
@@ -155,3 +156,22 @@ def test_ring_spans__equal_numpys_crossings_of_random_rings(seed):
     want = _numpy_spans(start, end, first, sizes, 50, 60)
     assert all(np.array_equal(a, b) for a, b in zip(got, want, strict=True))
     assert len(got[0]) > 300
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_fill_cover__equals_summing_the_spans_cell_by_cell(seed):
+    rng = np.random.default_rng(seed)
+    h, w, wall = 40, 70, 1 << 16
+    n = 600
+    rows = rng.integers(0, h, n)
+    col_a = rng.integers(0, w + 1, n)
+    col_b = np.minimum(col_a + rng.integers(0, 25, n), w)  # some empty, some to the last column
+    weight = np.where(rng.random(n) < 0.2, wall, 1).astype(np.int64)
+    cover = np.zeros((h, w + 1), dtype=np.int64)
+    np.add.at(cover, (rows, col_a), weight)
+    np.add.at(cover, (rows, col_b), -weight)
+    cover = np.cumsum(cover, axis=1)[:, :w]
+    want = np.where(cover >= wall, RASTER_WALL, np.where(cover > 0, RASTER_FREE, RASTER_OUTSIDE))
+    got = fill_cover(rows, col_a, col_b, weight, h, w, wall)
+    assert got.dtype == np.uint8 and np.array_equal(got, want)
+    assert {RASTER_WALL, RASTER_FREE, RASTER_OUTSIDE} <= set(np.unique(got))

@@ -7,6 +7,7 @@ import pytest
 import shapely
 from shapely.ops import unary_union
 
+from realistic_indoor.building import Building
 from realistic_indoor.building.walls import DOOR_GAP_DEPTH_M, door_gap, wall_segments
 from realistic_indoor.generator import generate
 
@@ -40,3 +41,24 @@ def test_wall_segments__of_real_plans_equal_the_per_object_pipeline(real_plans_d
     for path in sorted(real_plans_dir.glob("*/*.xml"))[::6]:
         building = load(path)
         assert np.array_equal(wall_segments(building), _reference_walls(building)), path.name
+
+
+def test_door_cuts__cuts_that_meet_are_merged_and_the_others_kept(tiny_office):
+    from realistic_indoor.building.walls import _door_cuts
+
+    cuts = shapely.get_parts(_door_cuts(tiny_office, DOOR_GAP_DEPTH_M))
+    assert len(cuts) == len(tiny_office.doors)  # apart: one polygon per door, as made
+    corner = Building("office", tiny_office.rooms, (*tiny_office.doors, _door_beside(tiny_office.doors[0])))
+    merged = shapely.get_parts(_door_cuts(corner, DOOR_GAP_DEPTH_M))
+    assert len(merged) == len(tiny_office.doors)  # the new door's cut overlaps the first one's
+    union = shapely.union_all([door_gap(d) for d in corner.doors])
+    assert shapely.equals(shapely.union_all(merged), union)
+    assert np.array_equal(wall_segments(corner), _reference_walls(corner))
+
+
+def _door_beside(door):
+    """A door on the same wall, 0.2 m along from ``door``: their cuts overlap."""
+    from dataclasses import replace
+
+    dx, dy = door.direction
+    return replace(door, id=door.id + "-beside", x=door.x + 0.2 * dx, y=door.y + 0.2 * dy)

@@ -12,11 +12,13 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["MAX_WIDTH", "column_squares", "distance_to_mask", "row_distances"]
+__all__ = ["MAX_WIDTH", "column_squares", "distance_to_mask", "row_distances", "row_scratch"]
 
 _INF = 1e20
 _FAR = np.float32(1e10)
 """Distance (cells) of a cell with no obstacle cell in reach: the square root of ``_INF``."""
+_MAX_STRETCHES = 8
+"""Most stretches of equal column distance a run is solved by stretch; beyond, by envelope."""
 MAX_WIDTH = 2_000_000
 """Widest grid (cells) whose row pass stays exact: its integer products then fit in an int64."""
 
@@ -38,10 +40,9 @@ def _edt(obstacle):  # pragma: no cover - compiled
     h, w = obstacle.shape
     squares = column_squares(obstacle, False)
     out = np.empty((h, w), dtype=np.float32)
-    stack_at = np.empty(w, dtype=np.int64)
-    stack_height = np.empty(w, dtype=np.int64)
+    stack_at, stack_height, nearest = row_scratch(w)
     for r in range(h):
-        row_distances(squares[r], out[r], stack_at, stack_height)
+        row_distances(squares[r], out[r], stack_at, stack_height, nearest)
     return out
 
 
@@ -84,21 +85,31 @@ def _square(x):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - compiled
+def row_scratch(w):  # pragma: no cover - compiled
+    """The scratch arrays :func:`row_distances` takes for rows of ``w`` cells."""
+    stack_at = np.empty(max(w, 2 * _MAX_STRETCHES), dtype=np.int64)
+    stack_height = np.empty(max(w, _MAX_STRETCHES), dtype=np.int64)
+    return stack_at, stack_height, np.empty(w)
+
+
+@njit(cache=True, nogil=True)
+def row_distances(squares, out, stack_at, stack_height, nearest):  # pragma: no cover - compiled
     """One row of the distance transform, from its cells' :func:`column_squares`.
 
     Each run of free cells is solved on its own, between the obstacle cells that bound it: no
-    cell beyond them can be nearer. A run whose cells all have the same column distance (the
-    middle of a room) has a closed form; other runs take the lower envelope of the parabolas
+    cell beyond them can be nearer. In a building the column distances along a run take a
+    few values in long stretches (a room's middle: one), and a cell's nearest obstacle is then
+    found stretch by stretch; runs of more stretches take the lower envelope of the parabolas
     ``(q - p)² + g(p)``, built and read with integer products instead of the intersections'
-    divisions. The squared distances are whole numbers, so the result is the exact minimum.
+    divisions. The squared distances are whole numbers, so either gives the exact minimum.
 
     Args:
         squares: ``(W,)`` float32 row of :func:`column_squares` (0 on obstacle cells).
         out: ``(W,)`` float32, overwritten with the distances (cells): 0 on obstacle cells,
             1e10 where no obstacle cell is in reach.
-        stack_at: ``(W,)`` int64 scratch: the envelope's parabolas' columns.
-        stack_height: ``(W,)`` int64 scratch: their ``g(p) + p²``.
+        stack_at: int64 scratch, from :func:`row_scratch`.
+        stack_height: int64 scratch, from :func:`row_scratch`.
+        nearest: float64 scratch, from :func:`row_scratch`.
     """
     w = squares.shape[0]
     q = 0
@@ -110,34 +121,45 @@ def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - c
         first = q
         while q < w and squares[q] != 0.0:
             q += 1
-        if not _level_run(squares, out, first, q - 1):
-            _run_distances(
-                squares, out, first, q - 1, max(first - 1, 0), min(q, w - 1), stack_at, stack_height
-            )
+        lo, hi = max(first - 1, 0), min(q, w - 1)
+        if not _stretch_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height, nearest):
+            _run_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height)
 
 
 @njit(cache=True, nogil=True, inline="always")
-def _level_run(squares, out, first, last):  # pragma: no cover - compiled
-    """Distances of run ``first..last`` if its cells share one finite column distance; else False.
+def _stretch_distances(squares, out, first, last, lo, hi, ends, level, nearest):  # pragma: no cover
+    """Distances of cells ``first..last`` from stretches of equal ``g`` in columns ``lo..hi``.
 
-    Then a cell's nearest obstacle is along its column or the run's end cell beyond either
-    end (an obstacle, unless the run reaches the edge of the grid).
+    The nearest point of a stretch ``[s, e]`` of level ``g`` to cell ``q`` is ``q`` clamped to
+    it, at squared distance ``g + (q - clamp)²``. False, with nothing written, if the columns
+    hold more than :data:`_MAX_STRETCHES` stretches of finite ``g``.
     """
-    level = squares[first]
-    if level >= _INF:
-        return False
-    for p in range(first + 1, last + 1):
-        if squares[p] != level:
-            return False
-    w = squares.shape[0]
-    square = np.int64(level)
-    for q in range(first, last + 1):
-        best = square
-        if first > 0:
-            best = min(best, (q - first + 1) * (q - first + 1))
-        if last < w - 1:
-            best = min(best, (last + 1 - q) * (last + 1 - q))
-        out[q] = np.float32(np.sqrt(np.float64(best)))
+    n = 0
+    p = lo
+    while p <= hi:
+        g = squares[p]
+        s = p
+        while p < hi and squares[p + 1] == g:
+            p += 1
+        if g < _INF:
+            if n == _MAX_STRETCHES:
+                return False
+            ends[2 * n], ends[2 * n + 1], level[n] = s, p, np.int64(g)
+            n += 1
+        p += 1
+    if n == 0:
+        out[first : last + 1] = _FAR
+        return True
+    m = last + 1 - first
+    for i in range(m):
+        nearest[i] = np.inf
+    for k in range(n):
+        s, e, g = ends[2 * k] - first, ends[2 * k + 1] - first, np.float64(level[k])
+        for i in range(m):
+            off = max(max(s - i, i - e), 0)
+            nearest[i] = min(nearest[i], g + np.float64(off * off))
+    for i in range(m):
+        out[first + i] = np.float32(np.sqrt(nearest[i]))
     return True
 
 

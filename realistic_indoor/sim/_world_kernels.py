@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim._edt import column_squares, row_distances
+from realistic_indoor.sim._edt import column_squares, row_distances, row_scratch
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
 __all__ = ["fill_cover", "reachable_from", "ring_spans", "skip_and_clearance", "skip_and_clearance_of"]
@@ -328,10 +328,9 @@ def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # 
     squares = column_squares(grid, RASTER_FREE)
     skip = np.empty((h, w), dtype=np.uint8)
     dist = np.empty(w, dtype=np.float32)
-    stack_at = np.empty(w, dtype=np.int64)
-    stack_height = np.empty(w, dtype=np.int64)
+    stack_at, stack_height, nearest = row_scratch(w)
     for r in range(h):
-        row_distances(squares[r], dist, stack_at, stack_height)
+        row_distances(squares[r], dist, stack_at, stack_height, nearest)
         _skip_row(grid[r], dist, skip[r], squares[r], safety, skip_wall, skip_outside, half, res)
     return skip, squares
 

@@ -57,3 +57,13 @@ def test_distance_field__refuses_grids_too_wide_for_exact_integers():
 
     with pytest.raises(ValueError, match="cells wide"):
         distance_field(np.zeros((1, MAX_WIDTH + 1), dtype=bool))
+
+
+def test_distance_field__rows_of_many_stretches_agree_with_scipy():
+    obstacle = np.ones((40, 300), dtype=bool)
+    obstacle[2:38, 1:299] = False
+    obstacle[2:20, 10:290:12] = True  # a comb of short walls: runs of 3 stretches below them
+    obstacle[20:38, 5:295:7] = True  # and of dozens of stretches across them
+    obstacle[25:28, 5:295:7] = False  # doors through the comb
+    want = distance_transform_edt(~obstacle).astype(np.float32)
+    assert np.array_equal(distance_field(obstacle), want)

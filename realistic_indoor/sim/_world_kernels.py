@@ -172,8 +172,8 @@ def reachable_from(grid, row, col):  # pragma: no cover - compiled
 
     Works on runs of free cells along the rows rather than on cells: two runs of neighbouring
     rows that share a column are joined (union-find), and the runs of the start's component
-    are written out. One read of the grid and one write of the result; the runs are few (a
-    default office has about 6,000 for 870,000 cells).
+    are written out. One read of the grid (usually) and one write of the result; the runs are
+    few (a default office has about 6,000 for 870,000 cells).
 
     Args:
         grid: ``(H, W)`` uint8 raster codes.
@@ -202,27 +202,32 @@ def reachable_from(grid, row, col):  # pragma: no cover - compiled
 def _free_runs(grid):  # pragma: no cover - compiled
     """Runs of free cells, row by row: ``(row, first column, last column, row_start)``.
 
-    ``row_start[r]:row_start[r + 1]`` are the runs of row ``r``, in column order. Two reads of
-    the grid: the first counts the runs, the second writes them.
+    ``row_start[r]:row_start[r + 1]`` are the runs of row ``r``, in column order. One read of
+    the grid into room for 16 runs per row (a default office has about 6); a grid with more
+    is read again into arrays of the size the first read counted.
     """
     h = grid.shape[0]
     row_start = np.empty(h + 1, dtype=np.int64)
+    first = np.empty(16 * h, dtype=np.int64)
+    last = np.empty(16 * h, dtype=np.int64)
     row_start[0] = 0
     for r in range(h):
-        row_start[r + 1] = row_start[r] + _runs_of_row(grid[r], row_start, row_start, -1)
+        row_start[r + 1] = row_start[r] + _runs_of_row(grid[r], first, last, row_start[r])
     n = row_start[h]
+    if n > first.shape[0]:
+        first = np.empty(n, dtype=np.int64)
+        last = np.empty(n, dtype=np.int64)
+        for r in range(h):
+            _runs_of_row(grid[r], first, last, row_start[r])
     run_row = np.empty(n, dtype=np.int64)
-    first = np.empty(n, dtype=np.int64)
-    last = np.empty(n, dtype=np.int64)
     for r in range(h):
         run_row[row_start[r] : row_start[r + 1]] = r
-        _runs_of_row(grid[r], first, last, row_start[r])
-    return run_row, first, last, row_start
+    return run_row, first[:n], last[:n], row_start
 
 
 @njit(cache=True, nogil=True, inline="always")
 def _runs_of_row(codes, first, last, at):  # pragma: no cover - compiled
-    """The number of runs of free cells in one row; stored from index ``at`` unless it is -1."""
+    """The number of runs of free cells in one row, stored from index ``at`` while they fit."""
     w = codes.shape[0]
     count = 0
     c = 0
@@ -233,7 +238,7 @@ def _runs_of_row(codes, first, last, at):  # pragma: no cover - compiled
         a = c
         while c < w and codes[c] == RASTER_FREE:
             c += 1
-        if at >= 0:
+        if at + count < first.shape[0]:
             first[at + count] = a
             last[at + count] = c - 1
         count += 1

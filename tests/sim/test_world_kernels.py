@@ -175,3 +175,12 @@ def test_fill_cover__equals_summing_the_spans_cell_by_cell(seed):
     got = fill_cover(rows, col_a, col_b, weight, h, w, wall)
     assert got.dtype == np.uint8 and np.array_equal(got, want)
     assert {RASTER_WALL, RASTER_FREE, RASTER_OUTSIDE} <= set(np.unique(got))
+
+
+def test_reachable_from__rows_of_more_runs_than_the_first_read_holds():
+    grid = np.full((5, 200), RASTER_WALL, dtype=np.uint8)
+    grid[:, ::2] = RASTER_FREE  # 100 runs in every row: more than 16 per row
+    grid[0, :] = RASTER_FREE  # a top row joining the columns
+    got = reachable_from(grid, 4, 10)
+    want = grid == RASTER_FREE
+    assert np.array_equal(got, want)

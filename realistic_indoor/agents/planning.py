@@ -54,7 +54,7 @@ def clearance(state: np.ndarray, resolution_m: float) -> np.ndarray:
     """Distance from each cell's centre to the nearest occupied cell's centre (m, float32).
 
     Cost: the simulator's exact Euclidean distance transform
-    (:func:`~realistic_indoor.sim.fields.distance_field`), about 15 ms per million cells.
+    (:func:`~realistic_indoor.sim.fields.distance_field`), about 5-13 ms per million cells.
     """
     return distance_field(state == MAPPED_OCCUPIED, resolution_m)
 

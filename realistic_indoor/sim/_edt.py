@@ -2,7 +2,9 @@
 
 Several times faster than ``scipy.ndimage.distance_transform_edt``, which also builds the
 feature transform: the world's distance field is rebuilt with every new building. Private: use
-:func:`realistic_indoor.sim.fields.distance_field`.
+:func:`realistic_indoor.sim.fields.distance_field`; :mod:`realistic_indoor.sim._world_kernels`
+runs the same two passes and turns each row straight into the raycaster's skip field and the
+world's clearance.
 """
 
 from __future__ import annotations
@@ -10,9 +12,15 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["distance_to_mask"]
+__all__ = ["MAX_WIDTH", "column_squares", "distance_to_mask", "row_distances", "row_scratch"]
 
 _INF = 1e20
+_FAR = np.float32(1e10)
+"""Distance (cells) of a cell with no obstacle cell in reach: the square root of ``_INF``."""
+_MAX_STRETCHES = 8
+"""Most stretches of equal column distance a run is solved by stretch; beyond, by envelope."""
+MAX_WIDTH = 2_000_000
+"""Widest grid (cells) whose row pass stays exact: its integer products then fit in an int64."""
 
 
 def distance_to_mask(obstacle: np.ndarray) -> np.ndarray:
@@ -30,43 +38,165 @@ def distance_to_mask(obstacle: np.ndarray) -> np.ndarray:
 @njit(cache=True, nogil=True)
 def _edt(obstacle):  # pragma: no cover - compiled
     h, w = obstacle.shape
-    g = np.empty((h, w), dtype=np.float32)  # squared distance to the nearest obstacle in the column
-    for c in range(w):
-        g[0, c] = 0.0 if obstacle[0, c] else _INF
-    for r in range(1, h):  # sweeps row by row: contiguous memory
-        for c in range(w):
-            g[r, c] = 0.0 if obstacle[r, c] else g[r - 1, c] + 1.0
-    for r in range(h - 2, -1, -1):
-        for c in range(w):
-            g[r, c] = min(g[r, c], g[r + 1, c] + 1.0)
-    for r in range(h):
-        for c in range(w):
-            g[r, c] = g[r, c] * g[r, c] if g[r, c] < _INF else _INF
+    squares = column_squares(obstacle, False)
     out = np.empty((h, w), dtype=np.float32)
-    v = np.empty(w, dtype=np.int64)
-    z = np.empty(w + 1)
-    for r in range(h):  # lower envelope of parabolas along each row
-        k = 0
-        v[0] = 0
-        z[0] = -_INF
-        z[1] = _INF
-        for q in range(1, w):
-            s = _intersection(g, r, q, v[k])
-            while s <= z[k]:
-                k -= 1
-                s = _intersection(g, r, q, v[k])
-            k += 1
-            v[k] = q
-            z[k] = s
-            z[k + 1] = _INF
-        k = 0
-        for q in range(w):
-            while z[k + 1] < q:
-                k += 1
-            out[r, q] = np.sqrt(min((q - v[k]) ** 2 + np.float64(g[r, v[k]]), 1e20))
+    stack_at, stack_height, nearest = row_scratch(w)
+    for r in range(h):
+        row_distances(squares[r], out[r], stack_at, stack_height, nearest)
     return out
 
 
+@njit(cache=True, nogil=True)
+def column_squares(cells, free_value):  # pragma: no cover - compiled
+    """Squared distance (cells²) from each cell to the nearest obstacle cell of its column.
+
+    Args:
+        cells: ``(H, W)`` array; a cell is an obstacle unless it holds ``free_value``.
+        free_value: The value of free cells.
+
+    Returns:
+        ``(H, W)`` float32: 0 on obstacle cells, the square of the distance along the column
+        to the nearest obstacle cell elsewhere (float32 arithmetic), 1e20 in a column without one.
+
+    Raises:
+        ValueError: If the grid is more than :data:`MAX_WIDTH` cells wide.
+    """
+    h, w = cells.shape
+    if w > MAX_WIDTH:
+        raise ValueError("the distance transform takes grids at most 2,000,000 cells wide")
+    g = np.empty((h, w), dtype=np.float32)
+    for c in range(w):
+        g[0, c] = _INF if cells[0, c] == free_value else 0.0
+    for r in range(1, h):  # sweeps row by row: contiguous memory
+        for c in range(w):
+            g[r, c] = g[r - 1, c] + 1.0 if cells[r, c] == free_value else 0.0
+    for r in range(h - 2, -1, -1):  # upwards, squaring each row once the one below is final
+        for c in range(w):
+            g[r, c] = min(g[r, c], g[r + 1, c] + 1.0)
+            g[r + 1, c] = _square(g[r + 1, c])
+    for c in range(w):
+        g[0, c] = _square(g[0, c])
+    return g
+
+
 @njit(cache=True, nogil=True, inline="always")
-def _intersection(g, r, q, p):  # pragma: no cover - compiled
-    return ((np.float64(g[r, q]) + q * q) - (np.float64(g[r, p]) + p * p)) / (2.0 * (q - p))
+def _square(x):  # pragma: no cover - compiled
+    return x * x if x < _INF else _INF
+
+
+@njit(cache=True, nogil=True)
+def row_scratch(w):  # pragma: no cover - compiled
+    """The scratch arrays :func:`row_distances` takes for rows of ``w`` cells."""
+    stack_at = np.empty(max(w, 2 * _MAX_STRETCHES), dtype=np.int64)
+    stack_height = np.empty(max(w, _MAX_STRETCHES), dtype=np.int64)
+    return stack_at, stack_height, np.empty(w)
+
+
+@njit(cache=True, nogil=True)
+def row_distances(squares, out, stack_at, stack_height, nearest):  # pragma: no cover - compiled
+    """One row of the distance transform, from its cells' :func:`column_squares`.
+
+    Each run of free cells is solved on its own, between the obstacle cells that bound it: no
+    cell beyond them can be nearer. In a building the column distances along a run take a
+    few values in long stretches (a room's middle: one), and a cell's nearest obstacle is then
+    found stretch by stretch; runs of more stretches take the lower envelope of the parabolas
+    ``(q - p)² + g(p)``, built and read with integer products instead of the intersections'
+    divisions. The squared distances are whole numbers, so either gives the exact minimum.
+
+    Args:
+        squares: ``(W,)`` float32 row of :func:`column_squares` (0 on obstacle cells).
+        out: ``(W,)`` float32, overwritten with the distances (cells): 0 on obstacle cells,
+            1e10 where no obstacle cell is in reach.
+        stack_at: int64 scratch, from :func:`row_scratch`.
+        stack_height: int64 scratch, from :func:`row_scratch`.
+        nearest: float64 scratch, from :func:`row_scratch`.
+    """
+    w = squares.shape[0]
+    q = 0
+    while q < w:
+        if squares[q] == 0.0:
+            out[q] = 0.0
+            q += 1
+            continue
+        first = q
+        while q < w and squares[q] != 0.0:
+            q += 1
+        lo, hi = max(first - 1, 0), min(q, w - 1)
+        if not _stretch_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height, nearest):
+            _run_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _stretch_distances(squares, out, first, last, lo, hi, ends, level, nearest):  # pragma: no cover
+    """Distances of cells ``first..last`` from stretches of equal ``g`` in columns ``lo..hi``.
+
+    The nearest point of a stretch ``[s, e]`` of level ``g`` to cell ``q`` is ``q`` clamped to
+    it, at squared distance ``g + (q - clamp)²``. False, with nothing written, if the columns
+    hold more than :data:`_MAX_STRETCHES` stretches of finite ``g``.
+    """
+    n = 0
+    p = lo
+    while p <= hi:
+        g = squares[p]
+        s = p
+        while p < hi and squares[p + 1] == g:
+            p += 1
+        if g < _INF:
+            if n == _MAX_STRETCHES:
+                return False
+            ends[2 * n], ends[2 * n + 1], level[n] = s, p, np.int64(g)
+            n += 1
+        p += 1
+    if n == 0:
+        out[first : last + 1] = _FAR
+        return True
+    m = last + 1 - first
+    for i in range(m):
+        nearest[i] = np.inf
+    for k in range(n):
+        s, e, g = ends[2 * k] - first, ends[2 * k + 1] - first, np.float64(level[k])
+        for i in range(m):
+            off = max(max(s - i, i - e), 0)
+            nearest[i] = min(nearest[i], g + np.float64(off * off))
+    for i in range(m):
+        out[first + i] = np.float32(np.sqrt(nearest[i]))
+    return True
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _run_distances(squares, out, first, last, lo, hi, at, height):  # pragma: no cover - compiled
+    """Distances of cells ``first..last`` from the parabolas of columns ``lo..hi``.
+
+    Integer arithmetic is exact while ``(g + p²) * W`` fits in an int64: up to grids
+    :data:`MAX_WIDTH` cells wide, which :func:`column_squares` checks.
+    """
+    k = -1
+    below_at, below_h, top_at, top_h = 0, 0, 0, 0
+    for p in range(lo, hi + 1):
+        g = squares[p]
+        if g >= _INF:
+            continue
+        h = np.int64(g) + p * p
+        # pop the top while the new parabola meets it before the top meets the one below it
+        while k >= 1 and (h - top_h) * (top_at - below_at) <= (top_h - below_h) * (p - top_at):
+            k -= 1
+            top_at, top_h = below_at, below_h
+            if k >= 1:
+                below_at, below_h = at[k - 1], height[k - 1]
+        k += 1
+        at[k] = p
+        height[k] = h
+        below_at, below_h, top_at, top_h = top_at, top_h, p, h
+    if k < 0:
+        out[first : last + 1] = _FAR
+        return
+    j = 0
+    for q in range(first, last + 1):
+        best = height[j] + q * (q - 2 * at[j])
+        while j < k:
+            after = height[j + 1] + q * (q - 2 * at[j + 1])
+            if after > best:
+                break
+            best = after
+            j += 1
+        out[q] = np.float32(np.sqrt(np.float64(best)))

@@ -19,7 +19,8 @@ def distance_field(obstacle: np.ndarray, resolution_m: float = 1.0) -> np.ndarra
     """Distance from the centre of every cell to the centre of the nearest obstacle cell.
 
     Exact (Meijster et al. 2000), as ``scipy.ndimage.distance_transform_edt(~obstacle)`` and
-    several times faster; about 15 ms per million cells.
+    several times faster: about 5 ms per million cells of a building's raster, 13 where obstacles
+    are scattered (1% of the cells at random).
 
     Args:
         obstacle: ``(H, W)`` bool array, ``True`` on obstacle cells.

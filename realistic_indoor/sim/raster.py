@@ -127,9 +127,9 @@ def rasterize(
             fall on cell boundaries.
 
     Returns:
-        The raster. Cost: about 3-4 ms for a 2,000 m2 office at 0.05 m once the building's
+        The raster. Cost: about 0.9 ms for a 2,000 m2 office at 0.05 m once the building's
         walls are known (a scanline fill of the rooms and of one rectangle per wall segment:
-        crossings with NumPy, spans summed by a compiled pass).
+        crossings found and spans summed by compiled passes).
 
     Raises:
         ConfigError: If a size is out of range, the grid would exceed :data:`MAX_RASTER_CELLS`
@@ -221,10 +221,10 @@ def _cover_grid(
 
     Each ring is filled on its own (even-odd within the ring), so rings sharing an edge, like
     adjacent rooms, do not cancel out. A cell whose cover reaches ``_WALL_WEIGHT`` is a wall,
-    one covered at all is free, others are outside. The crossings are found with NumPy, the
-    spans summed and classified by one compiled pass. Returns an ``(H, W)`` uint8 array.
+    one covered at all is free, others are outside. The spans are found (ring by ring, row by
+    row) and then summed and classified by compiled passes. Returns an ``(H, W)`` uint8 array.
     """
-    from realistic_indoor.sim._world_kernels import fill_cover  # numba: only when rasterizing
+    from realistic_indoor.sim._world_kernels import fill_cover, ring_spans  # numba: only when rasterizing
 
     h, w = shape
     sizes = np.array([len(r) for r in rings])
@@ -232,23 +232,6 @@ def _cover_grid(
     start = (np.concatenate(rings) - origin) / res - 0.5  # cell-centre units
     nxt = np.arange(1, len(start) + 1)
     nxt[first + sizes - 1] = first
-    end = start[nxt]
-    ring_id = np.repeat(np.arange(len(rings)), sizes)
-
-    r0 = np.clip(np.ceil(np.minimum(start[:, 1], end[:, 1])), 0, h).astype(np.int64)
-    r1 = np.clip(np.ceil(np.maximum(start[:, 1], end[:, 1])), 0, h).astype(np.int64)
-    count = r1 - r0
-    edge = np.flatnonzero(count > 0)
-    count = count[edge]
-    e = np.repeat(edge, count)
-    rows = np.repeat(r0[edge], count) + (np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count))
-
-    sx, sy, ex, ey = start[e, 0], start[e, 1], end[e, 0], end[e, 1]
-    x = sx + (rows - sy) * (ex - sx) / (ey - sy)
-    ring = ring_id[e]
-    order = np.lexsort((x, rows, ring))
-    x, rows, ring = x[order], rows[order], ring[order]
-    span_weight = weights[ring[0::2]].astype(np.int64)
-    col_a = np.clip(np.ceil(x[0::2]), 0, w).astype(np.int64)
-    col_b = np.clip(np.ceil(x[1::2]), 0, w).astype(np.int64)
-    return fill_cover(np.ascontiguousarray(rows[0::2]), col_a, col_b, span_weight, h, w, _WALL_WEIGHT)
+    rows, col_a, col_b, ring = ring_spans(start, np.ascontiguousarray(start[nxt]), first, sizes, h, w)
+    span_weight = weights[ring].astype(np.int64)
+    return fill_cover(rows, col_a, col_b, span_weight, h, w, _WALL_WEIGHT)

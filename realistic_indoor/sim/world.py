@@ -138,6 +138,8 @@ class World:
         """Ids of the rooms of the building's main part: joined by doors, the most floor together."""
         import networkx as nx
 
+        if _all_joined(self.building):  # the usual case: one part, no graph or areas needed
+            return {r.id for r in self.building.rooms}
         parts = nx.connected_components(self.building.graph())
         area = self.building.room_by_id
         return max(parts, key=lambda part: sum(area[r].area for r in part), default=set())
@@ -192,6 +194,28 @@ class World:
     def _reachable_from(self, pose: Pose) -> np.ndarray:
         row, col = self.raster.world_to_cell(pose[:2])  # free: the start is clear of walls
         return reachable_from(self.raster.grid, int(row), int(col))
+
+
+def _all_joined(building: Building) -> bool:
+    """Whether interior doors join every room of ``building`` to every other (and name only its rooms)."""
+    links: dict[str, list[str]] = {r.id: [] for r in building.rooms}
+    for door in building.doors:
+        if door.room_b is None:
+            continue
+        if door.room_a not in links or door.room_b not in links:
+            return False
+        links[door.room_a].append(door.room_b)
+        links[door.room_b].append(door.room_a)
+    if not links:
+        return False
+    seen = {next(iter(links))}
+    todo = list(seen)
+    while todo:
+        for other in links[todo.pop()]:
+            if other not in seen:
+                seen.add(other)
+                todo.append(other)
+    return len(seen) == len(links)
 
 
 def _point(xy: np.ndarray):

@@ -94,3 +94,24 @@ def test_world__real_plan_gets_a_start_and_reachable_floor(real_plans_dir):
     assert w.reachable_area_m2 > 0.5 * w.building.area
     assert w.clearance_at(w.start_pose[:2]) >= w.config.start_clearance_m
     assert np.isfinite(w.start_pose).all()
+
+
+def _largest_door_component(building) -> set[str]:
+    import networkx as nx
+
+    parts = nx.connected_components(building.graph())
+    return max(parts, key=lambda part: sum(building.room_by_id[r].area for r in part))
+
+
+@pytest.mark.parametrize("building_type", ["office", "school", "house", "random"])
+def test_world__main_part_is_the_door_graphs_largest_component(building_type):
+    from realistic_indoor.generator import generate
+
+    building = generate(building_type, seed=5)
+    assert World(building).main_part() == _largest_door_component(building)
+
+
+def test_world__main_part_of_two_unjoined_flats_is_the_larger(tiny_office):
+    flat = Room.rectangle("far", "big", "office", (30, 0, 50, 20))  # 400 m2, no door reaches it
+    building = Building("office", (*tiny_office.rooms, flat), tiny_office.doors)
+    assert World(building).main_part() == {"far"} == _largest_door_component(building)

@@ -131,7 +131,9 @@ class SchoolGenerator(_WingGenerator):
     and a gym beside the block, reached from a corridor end or a hall. Small schools are one
     corridor with classrooms, toilets and stores on both sides; the gym comes in between 600
     and 1,200 m2 (none below, always above), as in the real school plans, which have no
-    gym-sized room under about 1,000 m2.
+    gym-sized room under about 1,000 m2. Large schools of the block layout may also get an
+    auditorium (from 2,500 m2) and a canteen (from 1,500 m2) beside the block, as about half
+    of the real ones of those sizes have (``BlockStyle.more_annexes``).
 
     Args:
         area_m2: Floor area wanted (m2), from 300 to 50,000 m2 (default 3,000).

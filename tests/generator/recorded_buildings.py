@@ -21,6 +21,7 @@ CASES: dict[str, dict[str, Any]] = {
     "office-paper": {"building_type": "office", "model": "paper"},
     "school": {"building_type": "school"},
     "school-6000": {"building_type": "school", "area_m2": 6000.0},
+    "school-paper": {"building_type": "school", "model": "paper"},
     "house": {"building_type": "house"},
     "house-220": {"building_type": "house", "area_m2": 220.0},
     "random": {"building_type": "random"},

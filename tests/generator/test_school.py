@@ -73,30 +73,70 @@ def _large_schools(area_m2, seeds=range(30)):
     return [generate(np.random.default_rng(seed)) for seed in seeds]
 
 
-def test_large_schools__get_a_canteen_and_an_auditorium_beside_the_gym_often():
-    # the shared real schools: 12 of 26 of 1,500 m2 and more have a canteen, 7 of 17 of 2,700 m2
-    # and more an auditorium; both come in certainly from 6,000 m2 where they find a place
+def _annexes(building, function, low_m2, high_m2):
+    """Big rooms of ``function`` in the annex's size range (ordinary rooms may share the name)."""
+    return [
+        r
+        for r in building.rooms
+        if r.function == function and r.label is SemanticLabel.BIG and low_m2 - 1.0 <= r.area <= high_m2 + 1.0
+    ]
+
+
+def test_more_annexes__none_below_1500_m2_and_no_random_draw():
+    import numpy as np
+
+    from realistic_indoor.generator.blocks.layout import _more_annexes
+    from realistic_indoor.generator.blocks.style import SCHOOL_BLOCKS
+
+    rng = np.random.default_rng(0)
+    before = rng.bit_generator.state
+    assert _more_annexes(rng, 1499.0, SCHOOL_BLOCKS) == []
+    assert rng.bit_generator.state == before  # small schools keep their draws
+
+
+def test_more_annexes__canteen_from_1500_auditorium_from_2500_both_certain_from_6000_m2():
+    import numpy as np
+
+    from realistic_indoor.generator.blocks.layout import _more_annexes
+    from realistic_indoor.generator.blocks.style import SCHOOL_BLOCKS
+
+    def functions(area_m2, seeds=200):
+        rngs = (np.random.default_rng(seed) for seed in range(seeds))
+        return [[f for f, _ in _more_annexes(rng, area_m2, SCHOOL_BLOCKS)] for rng in rngs]
+
+    at_2400 = functions(2400.0)
+    assert all("conference" not in f for f in at_2400)
+    # canteen probability at 2,400 m2: (2400 - 1500) / (6000 - 1500) = 0.2
+    assert 0.12 <= sum("canteen" in f for f in at_2400) / len(at_2400) <= 0.28
+    assert all(f == ["conference", "canteen"] for f in functions(6000.0))  # largest first
+    # at most 15% of the floor each: at 3,000 m2 every auditorium (450-850 m2) is cut to 450 m2
+    drawn = [
+        a for seed in range(50) for a in _more_annexes(np.random.default_rng(seed), 3000.0, SCHOOL_BLOCKS)
+    ]
+    auditoriums = [area for function, area in drawn if function == "conference"]
+    assert auditoriums and all(area == 450.0 for area in auditoriums)
+    assert all(200.0 <= area <= 400.0 for function, area in drawn if function == "canteen")
+
+
+def test_large_schools__get_a_canteen_and_an_auditorium_beside_the_gym_mostly():
+    # both come in certainly from 6,000 m2; an annex that finds no free place is left out
     schools = _large_schools(9000.0)
-    for function, low_m2, high_m2 in (("canteen", 200.0, 400.0), ("conference", 450.0, 850.0)):
-        annexes = [
-            (b, r)
-            for b in schools
-            for r in b.rooms
-            if r.function == function
-            and r.label is SemanticLabel.BIG
-            and low_m2 - 1.0 <= r.area <= high_m2 + 1.0
-        ]
-        assert len({id(b) for b, _ in annexes}) >= 0.3 * len(schools), function
-        for b, r in annexes:  # reached from a corridor or hall, like the gym
-            assert any(d.other(r.id) and b.room(d.other(r.id)).label in (C, H) for d in b.doors_of[r.id])
+    for function, low_m2, high_m2, share in (
+        ("canteen", 200.0, 400.0, 0.5),
+        ("conference", 450.0, 850.0, 0.4),
+    ):
+        with_it = [b for b in schools if _annexes(b, function, low_m2, high_m2)]
+        assert len(with_it) >= share * len(schools), function
+        for b in with_it:  # reached from a corridor or hall, like the gym
+            for r in _annexes(b, function, low_m2, high_m2):
+                assert any(d.other(r.id) and b.room(d.other(r.id)).label in (C, H) for d in b.doors_of[r.id])
 
 
-def test_small_schools__get_no_canteen_or_auditorium_annex():
-    for b in _large_schools(1400.0, range(15)):
-        assert not any(r.function in ("canteen", "conference") and r.area >= 300.0 for r in b.rooms)
-
-
-def test_large_schools__keep_their_floor_area_within_two_percent():
-    for area_m2 in (3500.0, 5000.0, 9000.0):
-        for b in _large_schools(area_m2, range(12)):
-            assert abs(b.area / area_m2 - 1.0) <= 0.02, (area_m2, b.metadata)
+def test_large_schools__keep_their_floor_area():
+    errors = [
+        abs(b.area / a - 1.0)
+        for a in (1600.0, 2200.0, 3000.0, 5000.0, 9000.0)
+        for b in _large_schools(a, range(20))
+    ]
+    assert max(errors) <= 0.035  # the block's own rounding: an annex left out or shrunk gives its area back
+    assert sum(errors) / len(errors) <= 0.005

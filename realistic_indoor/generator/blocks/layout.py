@@ -8,7 +8,6 @@ from typing import TYPE_CHECKING
 from realistic_indoor.generator.blocks.compose import compose
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
-from realistic_indoor.generator.blocks.style import MORE_ANNEX_SHARE
 from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
@@ -39,10 +38,8 @@ def block_plan(
 
     An annex (a school's gym, a big room as the real school plans label it) takes up to a quarter
     of the area (small buildings may have none, see ``draw_annex``), and large buildings may
-    get the style's ``more_annexes`` beside it (an auditorium, a canteen). Where they find no
-    free place beside the block at their full size, the block is drawn again with the annex
-    alone (three tries); then (three tries) the annex may come out smaller, and last the block
-    is laid out over the whole area.
+    get the style's ``more_annexes`` beside it (an auditorium, a canteen): see
+    :func:`_lay_out_with_annexes`.
 
     Returns:
         The plan (rooms, doors, functions) and facts about the layout for the metadata
@@ -53,21 +50,8 @@ def block_plan(
     if blocks.annex_area_m2 is not None:
         style = replace(style, annex_area_m2=blocks.annex_area_m2)
     annex_m2, style = draw_annex(rng, area_m2, style)
-    gym = (style.annex, annex_m2)
-    more = _more_annexes(rng, area_m2, blocks) if annex_m2 else []
-    # (annexes, whether the first may shrink, draws): full sizes first, so the floor area holds
-    tries = [([gym, *more], False, 1)] if more else []
-    tries += [([gym], False, 1), ([gym], True, 3)]
-    laid = None
-    for annexes, shrink, draws in tries if annex_m2 else []:
-        for _ in range(draws):
-            laid = _lay_out(rng, area_m2, model, style, blocks, annexes, shrink)
-            if laid is not None:
-                break
-        if laid is not None:
-            break
-    if laid is None:
-        laid = _lay_out(rng, area_m2, model, style, blocks, [], False)
+    annexes = [(style.annex, annex_m2), *_more_annexes(rng, area_m2, blocks)] if annex_m2 else []
+    laid = _lay_out_with_annexes(rng, area_m2, model, style, blocks, annexes)
     plan, shape = laid
     pairs = model.structures.connected_room_pairs
     scale = door_habit_scale(model, rng)
@@ -86,17 +70,62 @@ def block_plan(
     return plan, {"shape": shape}
 
 
+GYM_SCALES = (1.0, 0.8, 0.65)
+"""Shares of its drawn area a style's annex is laid out with, in turn, while it finds no place."""
+
+
+def _lay_out_with_annexes(
+    rng: np.random.Generator,
+    area_m2: float,
+    model: BuildingTypeModel,
+    style: WingStyle,
+    blocks: BlockStyle,
+    annexes: list[tuple[str, float]],
+) -> tuple[Plan, str]:
+    """The block and as many of ``annexes`` (``(function, area m2)``, the style's annex first) as find a place.
+
+    The block is drawn for the floor area less the annexes', so the building keeps its floor
+    area whatever is left out. Each time an annex finds no free place beside a newly drawn
+    block, the next draw leaves out that one (a further annex) or makes the style's annex
+    smaller (:data:`GYM_SCALES`); once that has shrunk twice in vain, the block takes the whole
+    area.
+
+    Returns:
+        The plan and the footprint's shape name.
+    """
+    gym_m2 = annexes[0][1] if annexes else 0.0
+    scales = list(GYM_SCALES[1:])
+    while True:  # ends: a draw without annexes always succeeds
+        laid = _lay_out(rng, area_m2, model, style, blocks, annexes)
+        if not isinstance(laid, int):
+            return laid
+        if laid > 0:
+            annexes = annexes[:laid] + annexes[laid + 1 :]
+        elif scales:
+            annexes = [(annexes[0][0], gym_m2 * scales.pop(0)), *annexes[1:]]
+        else:
+            annexes = []
+
+
 def _more_annexes(rng: np.random.Generator, area_m2: float, blocks: BlockStyle) -> list[tuple[str, float]]:
-    """The style's further annexes a building of ``area_m2`` (m2) gets: ``(function, area m2)``.
+    """The style's further annexes a building gets, in the style's order.
 
     Nothing is drawn for an annex below its first floor area (smaller buildings keep their
     draws).
+
+    Args:
+        rng: The building's random generator.
+        area_m2: The building's floor area (m2).
+        blocks: The layout style (``more_annexes``, ``more_annex_share``).
+
+    Returns:
+        ``(function, area m2)`` of each annex that comes in.
     """
     out = []
     for function, area_range, from_m2 in blocks.more_annexes:
         if area_m2 <= from_m2[0]:
             continue
-        area = min(rng.uniform(*area_range), MORE_ANNEX_SHARE * area_m2)
+        area = min(rng.uniform(*area_range), blocks.more_annex_share * area_m2)
         if comes_in(rng, area_m2, from_m2):
             out.append((function, area))
     return out
@@ -144,13 +173,11 @@ def _lay_out(
     style: WingStyle,
     blocks: BlockStyle,
     annexes: list[tuple[str, float]],
-    shrink: bool,
-) -> tuple[Plan, str] | None:
+) -> tuple[Plan, str] | int:
     """Rooms and corridors of the blocks and the annexes, and the footprint's shape name.
 
-    ``annexes`` are ``(function, area m2)``, the style's annex first; with ``shrink`` the first
-    may come out smaller where it does not fit whole (see ``add_annex``), the others never do.
-    ``None`` if one found no place.
+    ``annexes`` are ``(function, area m2)``, the style's annex first (with its service rooms).
+    Returns the index in ``annexes`` of the first that found no place instead.
     """
     annex_m2 = sum(area for _, area in annexes)
     dims = layout_dims(rng, model, style)
@@ -184,14 +211,18 @@ def _lay_out(
     )
     lobby = exterior_walls(plan, 0) if plan.rooms and plan.rooms[0].label is H else []
     for k, (function, area) in enumerate(annexes):
-        kind = {
-            "function": function,
-            "service_rooms": k == 0,
-            "scales": (1.0, 0.8, 0.65) if shrink and k == 0 else (1.0,),
-        }
-        if (
-            add_annex(plan, rng, style, area, label=B, keep_clear=lobby, room_m=blocks.annex_room_m, **kind)
-            < 0
-        ):
-            return None
+        placed = add_annex(
+            plan,
+            rng,
+            style,
+            area,
+            label=B,
+            keep_clear=lobby,
+            room_m=blocks.annex_room_m,
+            function=function,
+            service_rooms=k == 0,
+            scales=(1.0,),
+        )
+        if placed < 0:
+            return k
     return plan, shape

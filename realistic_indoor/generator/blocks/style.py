@@ -4,9 +4,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-MORE_ANNEX_SHARE = 0.15
-"""Largest share of the floor area one of a style's ``more_annexes`` takes."""
-
 __all__ = ["OFFICE_BLOCKS", "SCHOOL_BLOCKS", "BlockStyle"]
 
 
@@ -50,18 +47,21 @@ class BlockStyle:
         annex_room_m: Range of the depth of the rooms along the annex's far side, and the
             length along it each takes (m): a school gym's changing rooms and stores are group
             rooms of about 30 m2 in the real plans, not cubicles.
-        annex_area_m2: Range of the annex's area (m2) in this layout, in place of the wing
-            style's (``None``: the wing style's); at most a quarter of the floor area. The
-            gyms of the shared real schools have 486-868 m2 (median 579 m2; one of 2,167 m2),
-            a quarter or more of schools under 2,200 m2.
+        annex_area_m2: Range of the annex's area (m2) in this layout, its service rooms
+            included, in place of the wing style's (``None``: the wing style's); at most a
+            quarter of the floor area, a cap that binds below about 2,000-3,400 m2. The gyms of
+            the shared real schools have 486-868 m2 (median 579 m2; one of 2,167 m2), a quarter
+            or more of the floor in schools under 2,200 m2.
         more_annexes: Large rooms beside the block besides the style's annex, for large
             buildings: ``(function, area range (m2), floor areas over which it comes in (m2))``
             each, drawn as :func:`~realistic_indoor.generator.wings.annex.draw_annex` draws the
-            annex (none below the first floor area, certain above the second), each at most
-            :data:`MORE_ANNEX_SHARE` of the floor area and without service rooms. Of the
-            shared real schools of 1,500 m2 and more, 12 of 26 have a canteen (median about
-            290 m2), and 7 of the 17 of 2,700 m2 and more an auditorium of 450-830 m2
-            (labelled ``conference``).
+            annex (none below the first floor area, certain above the second, where it finds
+            a place), largest first, without service rooms. Of the shared real schools of
+            1,500 m2 and more, 12 of 26 have a canteen (median about 290 m2), and 7 of the 17
+            of 2,700 m2 and more an auditorium of 450-830 m2 (function ``conference``, the
+            real plans' label); the largest real school has 7,641 m2.
+        more_annex_share: Largest share of the floor area one of ``more_annexes`` takes (so an
+            auditorium of a school under 5,700 m2 is smaller than its range).
         corridor_cuts: How many corridor segments to cut, as a share of the number the model's
             corridor share asks for (real plans divide corridors at doors, width changes and
             fire doors: their segments are short, axes ratio about 4 in offices).
@@ -87,6 +87,7 @@ class BlockStyle:
     annex_room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5)
     annex_area_m2: tuple[float, float] | None = None
     more_annexes: tuple[tuple[str, tuple[float, float], tuple[float, float]], ...] = ()
+    more_annex_share: float = 0.15
     ring_share: bool = False
     compositions: dict[str, float] = field(default_factory=lambda: {"I": 1.0})
 
@@ -116,10 +117,10 @@ SCHOOL_BLOCKS = BlockStyle(
     core_hall_p=0.3,
     corridor_scale=0.8,
     annex_room_m=((3.4, 4.6), 7.0),
-    annex_area_m2=(400.0, 700.0),
+    annex_area_m2=(500.0, 850.0),
     more_annexes=(
-        ("canteen", (200.0, 400.0), (1500.0, 6000.0)),
         ("conference", (450.0, 850.0), (2500.0, 6000.0)),
+        ("canteen", (200.0, 400.0), (1500.0, 6000.0)),
     ),
     ring_share=True,
     compositions={"I": 0.3, "L": 0.35, "T": 0.15, "U": 0.2},

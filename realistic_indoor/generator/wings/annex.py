@@ -40,10 +40,16 @@ def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tu
 
 
 def comes_in(rng: np.random.Generator, area_m2: float, from_m2: tuple[float, float]) -> bool:
-    """Whether a building of ``area_m2`` (m2) gets something that comes in over ``from_m2``.
+    """Whether a building gets something that comes in over a range of floor areas.
 
-    Certainly from the second floor area on; below it, with a probability growing linearly
-    from 0 at the first (a random number is drawn only then).
+    Args:
+        rng: The building's random generator; one number is drawn below ``from_m2[1]`` only.
+        area_m2: The building's floor area (m2).
+        from_m2: Floor areas (m2): none at the first, certainly from the second, and in
+            between with a probability growing linearly.
+
+    Returns:
+        Whether it comes in.
     """
     low, high = from_m2
     return area_m2 >= high or rng.random() < (area_m2 - low) / (high - low)

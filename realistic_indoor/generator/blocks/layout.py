@@ -51,8 +51,7 @@ def block_plan(
         style = replace(style, annex_area_m2=blocks.annex_area_m2)
     annex_m2, style = draw_annex(rng, area_m2, style)
     annexes = [(style.annex, annex_m2), *_more_annexes(rng, area_m2, blocks)] if annex_m2 else []
-    laid = _lay_out_with_annexes(rng, area_m2, model, style, blocks, annexes)
-    plan, shape = laid
+    plan, shape = _lay_out_with_annexes(rng, area_m2, model, style, blocks, annexes)
     pairs = model.structures.connected_room_pairs
     scale = door_habit_scale(model, rng)
     if blocks.suites:

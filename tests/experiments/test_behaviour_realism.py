@@ -1,23 +1,17 @@
 import csv
-import importlib.util
 import json
 import math
-import sys
 import warnings
 from pathlib import Path
 
 import pytest
+from script_loader import load_script
 
-SCRIPT = Path(__file__).resolve().parents[2] / "experiments" / "behaviour_realism.py"
 AGENTS = ("wall", "frontier", "structure")
 
 
 def _load():
-    spec = importlib.util.spec_from_file_location("behaviour_realism", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
+    return load_script("experiments/behaviour_realism.py")
 
 
 def _run(argv):

@@ -1,20 +1,11 @@
 """scripts/twin_gap_by_size.py: the generator diagnostic runs end to end and refuses bad input."""
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import pytest
-
-SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "twin_gap_by_size.py"
+from script_loader import load_script
 
 
 def _load():
-    spec = importlib.util.spec_from_file_location("twin_gap_by_size", SCRIPT)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
+    return load_script("scripts/twin_gap_by_size.py")
 
 
 @pytest.mark.parametrize(

@@ -13,7 +13,7 @@ from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
-from realistic_indoor.generator.wings.annex import add_annex, comes_in, draw_annex
+from realistic_indoor.generator.wings.annex import ANNEX_SCALES, add_annex, comes_in, draw_annex
 
 if TYPE_CHECKING:
     import numpy as np
@@ -69,10 +69,6 @@ def block_plan(
     return plan, {"shape": shape}
 
 
-GYM_SCALES = (1.0, 0.8, 0.65)
-"""Shares of its drawn area a style's annex is laid out with, in turn, while it finds no place."""
-
-
 def _lay_out_with_annexes(
     rng: np.random.Generator,
     area_m2: float,
@@ -86,14 +82,14 @@ def _lay_out_with_annexes(
     The block is drawn for the floor area less the annexes', so the building keeps its floor
     area whatever is left out. Each time an annex finds no free place beside a newly drawn
     block, the next draw leaves out that one (a further annex) or makes the style's annex
-    smaller (:data:`GYM_SCALES`); once that has shrunk twice in vain, the block takes the whole
+    smaller (:data:`~realistic_indoor.generator.wings.annex.ANNEX_SCALES`); once that has shrunk twice in vain, the block takes the whole
     area.
 
     Returns:
         The plan and the footprint's shape name.
     """
     gym_m2 = annexes[0][1] if annexes else 0.0
-    scales = list(GYM_SCALES[1:])
+    scales = list(ANNEX_SCALES[1:])
     while True:  # ends: a draw without annexes always succeeds
         laid = _lay_out(rng, area_m2, model, style, blocks, annexes)
         if not isinstance(laid, int):

@@ -18,7 +18,10 @@ if TYPE_CHECKING:
 
     from realistic_indoor.generator.wings.style import WingStyle
 
-__all__ = ["add_annex", "comes_in", "draw_annex"]
+__all__ = ["ANNEX_SCALES", "add_annex", "comes_in", "draw_annex"]
+
+ANNEX_SCALES = (1.0, 0.8, 0.65)
+"""Shares of its area an annex is tried at, in turn, while it finds no free place."""
 
 
 def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tuple[float, WingStyle]:
@@ -91,7 +94,7 @@ def add_annex(
     room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5),
     function: str | None = None,
     service_rooms: bool = True,
-    scales: tuple[float, ...] = (1.0, 0.8, 0.65),
+    scales: tuple[float, ...] = ANNEX_SCALES,
 ) -> int:
     """Attach a hall of about ``area_m2`` outside a corridor end or a hall's facade.
 

@@ -257,6 +257,9 @@ def break_mazes(plan: Plan, rng: np.random.Generator, min_rooms: int = 3) -> Non
     A maze is a group of at least ``min_rooms`` ordinary rooms joined by doors among themselves
     of which at most one opens onto a corridor, a hall or outside (the validator's definition);
     one of its other rooms gets a door to a corridor or hall it touches, else to the outside.
+    A room entered through its host (a gym's changing rooms and stores, a closet) gets no
+    door to the outside: real plans have none there, so a suite of a big room and its service
+    rooms that touch no corridor stays as it is.
     """
     ordinary = [i for i, r in enumerate(plan.rooms) if r.label in ROOM_LABELS]
     group = {i: i for i in ordinary}
@@ -283,9 +286,12 @@ def break_mazes(plan: Plan, rng: np.random.Generator, min_rooms: int = 3) -> Non
             continue
         for i in (i for i in rooms if i not in gateway):
             circ = [j for j in neighbours[i] if plan.rooms[j].is_circulation]
-            if any(_door_to(plan, i, j, rng, RULES.room) for j in circ) or any(
-                add_door(plan, i, None, w, RULES.room, rng)
-                for w in exterior_walls(plan, i)
-                if door_fits(w, RULES.room)
+            if any(_door_to(plan, i, j, rng, RULES.room) for j in circ) or (
+                plan.rooms[i].host < 0
+                and any(
+                    add_door(plan, i, None, w, RULES.room, rng)
+                    for w in exterior_walls(plan, i)
+                    if door_fits(w, RULES.room)
+                )
             ):
                 break

@@ -49,6 +49,7 @@ def rooms_from_regions(
     corridor_cuts: float | None = None,
     max_axes_ratio: float = math.inf,
     widen_last_room: bool = False,
+    placed_small: float = 0.0,
 ) -> Plan:
     """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions.
 
@@ -56,7 +57,8 @@ def rooms_from_regions(
     :func:`~realistic_indoor.generator.wings.halls.carve_hall_bays`); ``corridor_cuts``
     overrides the style's share of corridor segments to cut; rooms are at least a strip's depth
     over ``max_axes_ratio`` wide; ``widen_last_room``: see
-    :class:`~realistic_indoor.generator.wings.bays.BayContext`.
+    :class:`~realistic_indoor.generator.wings.bays.BayContext`; ``placed_small``: small rooms
+    the building gets besides these (see :func:`~realistic_indoor.generator.wings.budget.building_budget`).
     """
     if hall_rooms:
         carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
@@ -66,7 +68,7 @@ def rooms_from_regions(
     circulation = regions.corridors + [r for _, rects in regions.halls for r in rects]
     stub = to_units(rng.uniform(1.3, 1.6))
     limit = (dims.depth + dims.shallow) // 2
-    budget = building_budget(regions, model, stub, style.core_rooms, limit)
+    budget = building_budget(regions, model, stub, style.core_rooms, limit, placed_small)
     ctx = BayContext(
         model, budget, circulation, stub, style.core_rooms, limit, max_axes_ratio, widen_last_room
     )

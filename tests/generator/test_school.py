@@ -1,6 +1,10 @@
 """Structures of real schools: classrooms along long corridors, large halls, labs and a gym."""
 
+import numpy as np
+
 from realistic_indoor.building import SemanticLabel
+from realistic_indoor.generator import generate_from, make_generator
+from realistic_indoor.models.building_model import real_model
 
 C, H = SemanticLabel.CORRIDOR, SemanticLabel.HALL
 
@@ -140,3 +144,20 @@ def test_large_schools__keep_their_floor_area():
     ]
     assert max(errors) <= 0.035  # the block's own rounding: an annex left out or shrunk gives its area back
     assert sum(errors) / len(errors) <= 0.005
+
+
+def test_school__small_rooms_keep_the_models_share_when_the_gym_brings_its_own():
+    # the fitted school model has small, medium and big rooms at shares 0.32, 0.38 and 0.10:
+    # 0.40 of the ordinary rooms small. The gym's changing rooms and stores count against
+    # that share (before, they came on top of it: 0.45-0.47 of the rooms were small)
+    shares = real_model("school").shares()
+    ordinary = (SemanticLabel.SMALL, SemanticLabel.MEDIUM, SemanticLabel.BIG)
+    want = shares[SemanticLabel.SMALL] / sum(shares[lab] for lab in ordinary)
+    for area_m2 in (1500.0, 4000.0):
+        generator = make_generator("school", area_m2=area_m2)
+        got = []
+        for seed in range(20):
+            b = generate_from(generator, seed)
+            counts = [sum(r.label is lab for r in b.rooms) for lab in ordinary]
+            got.append(counts[0] / sum(counts))
+        assert abs(float(np.mean(got)) - want) < 0.03, area_m2

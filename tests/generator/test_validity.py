@@ -129,6 +129,27 @@ def test_footprint__long_narrow_and_compact_buildings_both_occur(kind, samples):
     assert max(aspect) > 2.2
 
 
-@pytest.mark.parametrize("kind", REALISTIC)
+def _is_suite(b, maze):
+    """Whether ``maze`` is one big room and small rooms whose every door leads into it."""
+    doors = {rid: [d.other(rid) for d in b.doors if rid in d.rooms] for rid in maze}
+    heads = [rid for rid in maze if any(o not in maze for o in doors[rid])]
+    if len(heads) != 1 or b.room(heads[0]).label.value != "big":
+        return False
+    return all(
+        b.room(rid).label.value == "small" and set(doors[rid]) == {heads[0]}
+        for rid in maze
+        if rid != heads[0]
+    )
+
+
+@pytest.mark.parametrize("kind", ["office", "house"])
 def test_structure__no_rooms_reachable_only_through_each_other(kind, samples):
     assert sum(len(room_mazes(b)) for b in samples(kind)) == 0
+
+
+def test_structure__schools_reach_rooms_through_rooms_only_in_a_big_rooms_suite(samples):
+    # a gym's changing rooms and stores open onto the gym alone, as in real schools; any other
+    # group of rooms reached only through each other would be an office maze
+    mazes = [(b, m) for b in samples("school") for m in room_mazes(b)]
+    assert mazes  # the gyms' suites occur
+    assert [sorted(m) for b, m in mazes if not _is_suite(b, m)] == []

@@ -13,7 +13,13 @@ from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
-from realistic_indoor.generator.wings.annex import ANNEX_SCALES, add_annex, comes_in, draw_annex
+from realistic_indoor.generator.wings.annex import (
+    ANNEX_SCALES,
+    add_annex,
+    comes_in,
+    draw_annex,
+    expected_service_rooms,
+)
 
 if TYPE_CHECKING:
     import numpy as np
@@ -203,6 +209,7 @@ def _lay_out(
         corridor_cuts=blocks.corridor_cuts,
         max_axes_ratio=blocks.max_axes_ratio,
         widen_last_room=True,
+        placed_small=expected_service_rooms(annexes[0][1], blocks.annex_room_m) if annexes else 0.0,
     )
     lobby = exterior_walls(plan, 0) if plan.rooms and plan.rooms[0].label is H else []
     for k, (function, area) in enumerate(annexes):

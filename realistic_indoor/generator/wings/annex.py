@@ -18,10 +18,12 @@ if TYPE_CHECKING:
 
     from realistic_indoor.generator.wings.style import WingStyle
 
-__all__ = ["ANNEX_SCALES", "add_annex", "comes_in", "draw_annex"]
+__all__ = ["ANNEX_RATIO", "ANNEX_SCALES", "add_annex", "comes_in", "draw_annex", "expected_service_rooms"]
 
 ANNEX_SCALES = (1.0, 0.8, 0.65)
 """Shares of its area an annex is tried at, in turn, while it finds no free place."""
+ANNEX_RATIO = (1.3, 1.9)
+"""Range of an annex's long side over its short side, drawn uniformly."""
 
 
 def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tuple[float, WingStyle]:
@@ -117,7 +119,7 @@ def add_annex(
         The annex's room index, or -1 if there was no free place (the building is then smaller
         by the annex's area).
     """
-    ratio = rng.uniform(1.3, 1.9)
+    ratio = rng.uniform(*ANNEX_RATIO)
     spots = [
         (i, w)
         for i, r in enumerate(plan.rooms)
@@ -137,6 +139,17 @@ def add_annex(
                     return plan.add(room)
                 return _place(plan, rng, style, room, w.axis, _outward(plan, i, w), room_m)
     return -1
+
+
+def expected_service_rooms(area_m2: float, room_m: tuple[tuple[float, float], float]) -> float:
+    """About how many small rooms :func:`add_annex` puts along an annex of ``area_m2``.
+
+    The mean over the annex's two orientations, at the middle of :data:`ANNEX_RATIO`, of the
+    rooms of ``room_m``'s length along one side (at least two), as :func:`_place` cuts them.
+    """
+    ratio = sum(ANNEX_RATIO) / 2
+    sides_m = (math.sqrt(area_m2 * ratio), math.sqrt(area_m2 / ratio))
+    return sum(max(2, int(side / room_m[1])) for side in sides_m) / 2
 
 
 def _against(box: Rect, wall: Contact) -> bool:

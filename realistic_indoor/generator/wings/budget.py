@@ -28,10 +28,16 @@ class _Frontage:
     core_width: float
     rooms_per_core: float
     ends: int
+    placed_small: float = 0.0
 
 
 def _frontage(
-    regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int], limit: int
+    regions: Regions,
+    model: BuildingTypeModel,
+    stub: int,
+    core_rows: tuple[int, int],
+    limit: int,
+    placed_small: float,
 ) -> _Frontage:
     deep = [b for b in regions.bays if b.depth >= limit]
     shallow = [b for b in regions.bays if b.depth < limit]
@@ -42,7 +48,14 @@ def _frontage(
     rows, side, per_core = core_shape(model, round(depth), core_rows)
     core_width = stub + 2 * side if per_core == 2 * rows else side * per_core
     return _Frontage(
-        length, max(depth, 1), s_length, max(s_depth, 1), core_width, per_core, len(regions.ends)
+        length,
+        max(depth, 1),
+        s_length,
+        max(s_depth, 1),
+        core_width,
+        per_core,
+        len(regions.ends),
+        placed_small,
     )
 
 
@@ -55,7 +68,7 @@ def _units_for(n: float, f: _Frontage, model: BuildingTypeModel) -> dict[str, fl
     w_small = max(area_to_units(model.stats(S).area_mean) / f.shallow_depth, MIN_SMALL)
     need_s = ps * n
     closets = st.closets_per_room * (pm + pb) * n
-    rest = need_s * (1 - st.clustered_small_rooms) - closets - f.ends
+    rest = need_s * (1 - st.clustered_small_rooms) - closets - f.ends - f.placed_small
     small = min(max(rest, 0.0), f.shallow_length / w_small)
     shallow_m = max(f.shallow_length - small * w_small, 0.0) / (
         area_to_units(model.stats(M).area_mean) / f.shallow_depth
@@ -84,7 +97,12 @@ def _deep_frontage(units: dict[str, float], f: _Frontage, model: BuildingTypeMod
 
 
 def building_budget(
-    regions: Regions, model: BuildingTypeModel, stub: int, core_rows: tuple[int, int], limit: int
+    regions: Regions,
+    model: BuildingTypeModel,
+    stub: int,
+    core_rows: tuple[int, int],
+    limit: int,
+    placed_small: float = 0.0,
 ) -> Budget:
     """Units the strips should hold so that the building matches the model's label shares.
 
@@ -99,8 +117,10 @@ def building_budget(
         stub: Width of a service core's corridor (units).
         core_rows: Range of small rooms per side of a core.
         limit: Strips shallower than this hold small rooms (units).
+        placed_small: Small rooms the building gets outside the strips (an annex's service
+            rooms), counted against the model's share.
     """
-    f = _frontage(regions, model, stub, core_rows, limit)
+    f = _frontage(regions, model, stub, core_rows, limit, placed_small)
     lo, hi = 0.0, 1.0
     while _deep_frontage(_units_for(hi, f, model), f, model) < f.deep_length and hi < 1e6:
         hi *= 2

@@ -81,9 +81,12 @@ def assign_functions(
 
     Rooms of a service core get service functions, toilets in pairs; closets storage; the
     entrance hall an entrance function; ordinary rooms their label's mix, with the type's core
-    function (office, classroom, bedroom) kept for rooms that open onto a corridor.
+    function (office, classroom, bedroom) kept for rooms that open onto a corridor. A function
+    an annex holds (a school's gym, auditorium or canteen beside the block) is not given to a
+    room inside the building as well: real schools have one gym.
     """
     core = roles.core or _core_functions(model)
+    annexed = {r.function for r in plan.rooms if r.role == "annex" and r.function}
     partners = plan.door_partners()
     by_group: dict[int, list[int]] = {}
     for i, r in enumerate(plan.rooms):
@@ -95,6 +98,7 @@ def assign_functions(
         if r.function:
             continue
         weights = model.function_weights(r.label)
+        weights = {k: v for k, v in weights.items() if k not in annexed} or weights
         if r.role in ("closet", "back") and r.label is SemanticLabel.SMALL:
             r.function = draw_function(rng, weights, roles.storage)
         elif r.role == "end":

@@ -161,3 +161,10 @@ def test_school__small_rooms_keep_the_models_share_when_the_gym_brings_its_own()
             counts = [sum(r.label is lab for r in b.rooms) for lab in ordinary]
             got.append(counts[0] / sum(counts))
         assert abs(float(np.mean(got)) - want) < 0.03, area_m2
+
+
+def test_school__one_gym_per_school(samples):
+    # the gym stands beside the building (an annex); no room inside is named a gym as well,
+    # as no shared real school has two
+    gyms = [sum(r.function == "gym" for r in b.rooms) for b in samples("school")]
+    assert max(gyms) == 1

@@ -83,10 +83,13 @@ def assign_functions(
     entrance hall an entrance function; ordinary rooms their label's mix, with the type's core
     function (office, classroom, bedroom) kept for rooms that open onto a corridor. A function
     an annex holds (a school's gym, auditorium or canteen beside the block) is not given to a
-    room inside the building as well: real schools have one gym.
+    room inside the building as well, and a public function (``roles.public``: a library, a
+    reception) goes to one room of the building: none of the 55 shared real plans holds a gym,
+    library, cafeteria, reception or conference hall twice, and one of 13 schools with a
+    canteen has two.
     """
     core = roles.core or _core_functions(model)
-    annexed = {r.function for r in plan.rooms if r.role == "annex" and r.function}
+    held = {r.function for r in plan.rooms if r.role == "annex" and r.function}
     partners = plan.door_partners()
     by_group: dict[int, list[int]] = {}
     for i, r in enumerate(plan.rooms):
@@ -98,7 +101,7 @@ def assign_functions(
         if r.function:
             continue
         weights = model.function_weights(r.label)
-        weights = {k: v for k, v in weights.items() if k not in annexed} or weights
+        weights = {k: v for k, v in weights.items() if k not in held} or weights
         if r.role in ("closet", "back") and r.label is SemanticLabel.SMALL:
             r.function = draw_function(rng, weights, roles.storage)
         elif r.role == "end":
@@ -114,6 +117,8 @@ def assign_functions(
             if not any(j is not None and plan.rooms[j].is_circulation for j in partners[i]):
                 weights = {k: v for k, v in weights.items() if k not in roles.public} or weights
             r.function = draw_function(rng, weights, avoid=avoid)
+        if r.function in roles.public:
+            held.add(r.function)
 
 
 def _service_core(

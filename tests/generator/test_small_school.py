@@ -56,12 +56,17 @@ def test_small_school__same_seed_gives_identical_json():
 def test_small_school__is_mostly_one_corridor_with_classrooms_opening_onto_it():
     buildings = _buildings(400, 40)
     assert sum(b.metadata["shape"] == "double-loaded" for b in buildings) >= 0.9 * len(buildings)
+    classrooms, apart = 0, 0
     for b in buildings:
         assert any(r.label is SemanticLabel.CORRIDOR for r in b.rooms), b.metadata
         for r in b.rooms:
             if r.function == "classroom":
                 doors = b.doors_of[r.id]
-                assert any(d.other(r.id) and b.room(d.other(r.id)).label in CIRCULATION for d in doors)
+                classrooms += 1
+                apart += not any(d.other(r.id) and b.room(d.other(r.id)).label in CIRCULATION for d in doors)
+    # classrooms open onto a corridor or hall; 3 of the 321 in the shared real schools do not
+    assert classrooms >= 2 * len(buildings)
+    assert apart <= 0.03 * classrooms
 
 
 def test_draw_annex__no_gym_below_600_m2_sometimes_below_1200_m2_always_above():

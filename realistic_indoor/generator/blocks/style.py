@@ -115,7 +115,6 @@ SCHOOL_BLOCKS = BlockStyle(
     notch_p=0.4,
     court_p=0.35,
     core_hall_p=0.3,
-    corridor_scale=0.8,
     annex_room_m=((3.4, 4.6), 7.0),
     annex_area_m2=(500.0, 850.0),
     more_annexes=(

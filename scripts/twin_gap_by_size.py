@@ -13,6 +13,13 @@ agent once on every plan and every twin, and prints
 One twin per plan (what the behaviour study draws) leaves the wall follower's mean gap with a
 standard error of about 0.02: single plans swing by 0.3 between twins of one size.
 
+The robot starts just inside a building's first entrance. Real plans have none drawn and get
+them inferred (:func:`~realistic_indoor.io.floorplan.entrances.infer_entrances`: an
+``entrance`` space, else the largest hall or lobby on the outer wall, else the largest
+corridor); twins have the ones the generator placed. ``--infer-entrances`` gives the twins
+theirs by the real plans' rule instead, so both sides start by the same rule: how much of a
+gap comes from where the robot starts rather than from the building.
+
 Usage (the wall follower on the shared schools, three twins each: about a minute per core)::
 
     .venv/bin/python scripts/twin_gap_by_size.py ../shared/data/real_floorplans/school \
@@ -52,7 +59,30 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument("--seed", type=int, default=1000, help="seed of the first twin (default 1000)")
     p.add_argument("--workers", type=int, default=None, help="processes (default: one per core)")
     p.add_argument("--per-plan", action="store_true", help="also list every plan: area, real and twins' AUC")
+    p.add_argument(
+        "--infer-entrances",
+        action="store_true",
+        help="replace the twins' exterior doors by the ones the real plans' rule infers (same start rule)",
+    )
     return p.parse_args(argv)
+
+
+def with_inferred_entrances(building):
+    """``building`` with its exterior doors replaced by those the real plans' rule infers.
+
+    Interior doors are kept; the new doors are as wide as the widest exterior door it had (1 m
+    without one) and say which rule placed them in ``metadata["inferred_entrances"]``.
+    """
+    from dataclasses import replace
+
+    from realistic_indoor.io.floorplan.entrances import infer_entrances
+
+    inner = tuple(d for d in building.doors if d.room_b is not None)
+    width = max((d.width_m for d in building.doors if d.room_b is None), default=1.0)
+    doors, note = infer_entrances(list(building.rooms), {d.id for d in inner}, width)
+    return replace(
+        building, doors=inner + tuple(doors), metadata={**building.metadata, "inferred_entrances": note}
+    )
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -88,11 +118,14 @@ def report(args: argparse.Namespace, folder: Path) -> None:
     pairs = ((p.name, p.building) for p in plans)
     for i, twin in enumerate(generate_like(pairs, args.type, args.twins, args.seed)):
         path = folder / f"{twin.name}.json"
-        save(twin.building, path)
+        save(with_inferred_entrances(twin.building) if args.infer_entrances else twin.building, path)
         twins[plans[i // args.twins].name].append(path)
         shapes[path] = str(twin.building.metadata.get("shape", "-"))
     auc = _coverage_auc(args, explore_id(args.type), [p.path for p in plans], list(shapes))
-    print(f"{args.agent} on {len(plans)} {args.type} plans, {args.twins} twin(s) each (seeds {args.seed} on)")
+    starts = ", entrances inferred as the real plans'" if args.infer_entrances else ""
+    print(
+        f"{args.agent} on {len(plans)} {args.type} plans, {args.twins} twin(s) each (seeds {args.seed} on{starts})"
+    )
     _gap_table(plans, twins, shapes, auc)
     if args.per_plan:
         _plan_table(plans, twins, shapes, auc)

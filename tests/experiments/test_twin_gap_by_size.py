@@ -3,6 +3,8 @@
 import pytest
 from script_loader import load_script
 
+from realistic_indoor.building import Building, Door, Room
+
 
 def _load():
     return load_script("scripts/twin_gap_by_size.py")
@@ -32,3 +34,23 @@ def test_bad_twin_count_is_one_line_and_exit_2(real_plans_dir, capsys):
     assert _load().main([str(real_plans_dir / "school"), "--twins", "0"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == ["error: --twins must be >= 1, not 0"]
+
+
+def test_inferred_entrances_replace_the_twins_own_by_the_real_plans_rule():
+    # a corridor (0-20 x 0-2) with the only exterior door at its west end, and a hall (6-16 x 2-6)
+    # on the outer wall north of it: the rule puts the door in the middle of the hall's longest
+    # stretch of outer wall, its north side (10 m at y = 6; its ends are 4 m), and keeps the
+    # interior door
+    corridor = Room.rectangle("c", "corridor", "corridor", (0.0, 0.0, 20.0, 2.0))
+    hall = Room.rectangle("h", "hall", "hall", (6.0, 2.0, 16.0, 6.0))
+    inner = Door("d1", "c", "h", 11.0, 2.0, 1.0, 0.0)
+    own = Door("e1", "c", None, 0.0, 1.0, 1.2, 1.5707963267948966)
+    building = Building("office", (corridor, hall), (inner, own), metadata={"generator": "toy"})
+    out = _load().with_inferred_entrances(building)
+    exterior = [d for d in out.doors if d.room_b is None]
+    assert [d for d in out.doors if d.room_b is not None] == [inner]
+    assert len(exterior) == 1 and exterior[0].room_a == "h"
+    assert (exterior[0].x, exterior[0].y) == pytest.approx((11.0, 6.0))
+    assert exterior[0].width_m == pytest.approx(1.2)
+    assert out.metadata["inferred_entrances"]["rule"] == "largest hall or lobby"
+    assert out.metadata["generator"] == "toy"

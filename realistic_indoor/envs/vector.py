@@ -146,6 +146,9 @@ class BatchedExploreEnv(VectorEnv):
         self._collisions = np.zeros(n, dtype=np.int64)
         self._autoreset = np.zeros(n, dtype=bool)
         self._rngs: list[np.random.Generator] = []
+        self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
+        self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
+        self._slots: dict[str, np.ndarray] | None = None
 
     # -- the Gymnasium API ----------------------------------------------------------------------
     def reset(
@@ -186,8 +189,9 @@ class BatchedExploreEnv(VectorEnv):
             raise gym.error.ResetNeeded("call reset() before step()")
         self._commands[:] = self._command_batch(actions)
         self._mode[:] = np.where(self._autoreset, RESET, STEP)
-        for k in np.flatnonzero(self._autoreset):
-            self._reset_one(int(k))
+        if self._autoreset.any():
+            for k in np.flatnonzero(self._autoreset):
+                self._reset_one(int(k))
         self._run()
         stepped = self._mode == STEP
         self._sense(stepped)
@@ -239,6 +243,7 @@ class BatchedExploreEnv(VectorEnv):
     def close_extras(self, **kwargs: Any) -> None:
         """Free the worlds; a later step or restart asks for a reset first."""
         self._batch = Batch(self.num_envs)
+        self._slots = None
         self._rngs = []
 
     # -- state a user may inspect --------------------------------------------------------------------
@@ -294,6 +299,7 @@ class BatchedExploreEnv(VectorEnv):
             world = World(building, self.config.world)
             batch.load(k, world, self._params[0], self._pool)
         batch.reset_robot(k)
+        self._slots = None  # its building's start and floor may have changed
         self._steps[k] = 0
         self._path[k] = 0.0
         self._collisions[k] = 0
@@ -345,35 +351,52 @@ class BatchedExploreEnv(VectorEnv):
                 f"actions must be a finite ({self.num_envs}, 2) array of (linear, turn) in [-1, 1], "
                 f"got {a.dtype} {a.shape}"
             )
-        limits = np.array([self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s])
-        return np.clip(a, -1.0, 1.0) * limits
+        return np.minimum(np.maximum(a, -1.0), 1.0) * self._vw_limits  # np.clip's values, a third of its cost
+
+    def _slot_arrays(self) -> dict[str, np.ndarray]:
+        """Per sub-environment, what its building slot holds: start pose, floor, cell area.
+
+        Kept until a sub-environment resets (its building may change): the step reads them
+        through one array each instead of indexing the slot table every time.
+        """
+        if self._slots is None:
+            meta = self._batch.building_meta[self._batch.robot_building]
+            heading = meta[:, 6]
+            self._slots = {
+                "x": meta[:, 4],
+                "y": meta[:, 5],
+                "heading": heading,
+                "cos": np.cos(heading),
+                "sin": np.sin(heading),
+                "reachable": meta[:, 3],
+                "cell_m2": meta[:, 2] ** 2,
+            }
+        return self._slots
 
     def _coverage(self) -> np.ndarray:
-        reachable = self._batch.building_meta[self._batch.robot_building, 3]
+        reachable = self._slot_arrays()["reachable"]
         return np.where(reachable > 0, self._batch.observed / np.maximum(reachable, 1.0), 1.0)
 
     def _observe(self) -> dict[str, np.ndarray]:
-        c = self.config
         phys = self._batch.phys
-        start = self._batch.building_meta[self._batch.robot_building, 4:7]
-        dx, dy = phys[:, X] - start[:, 0], phys[:, Y] - start[:, 1]
-        cos0, sin0 = np.cos(start[:, 2]), np.sin(start[:, 2])
-        heading = np.remainder(phys[:, THETA] - start[:, 2] + np.pi, 2 * np.pi) - np.pi
-        pose = np.stack(
-            [
-                np.clip(cos0 * dx + sin0 * dy, -POSE_LIMIT_M, POSE_LIMIT_M),
-                np.clip(-sin0 * dx + cos0 * dy, -POSE_LIMIT_M, POSE_LIMIT_M),
-                heading,
-            ],
-            axis=1,
-        ).astype(np.float32)
-        limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
-        velocity = np.clip(phys[:, [V, W]], -limits, limits).astype(np.float32)
-        scan = np.minimum(self._scan_m * np.float32(1.0 / c.lidar.max_range_m), np.float32(1.0))
-        return {"scan": scan, "local_map": self._local_map.copy(), "velocity": velocity, "pose": pose}
+        start = self._slot_arrays()
+        dx, dy = phys[:, X] - start["x"], phys[:, Y] - start["y"]
+        cos0, sin0 = start["cos"], start["sin"]
+        pose = np.empty((self.num_envs, 3), dtype=np.float32)  # float64 values cast on assignment
+        pose[:, 0] = np.minimum(np.maximum(cos0 * dx + sin0 * dy, -POSE_LIMIT_M), POSE_LIMIT_M)
+        pose[:, 1] = np.minimum(np.maximum(-sin0 * dx + cos0 * dy, -POSE_LIMIT_M), POSE_LIMIT_M)
+        pose[:, 2] = np.remainder(phys[:, THETA] - start["heading"] + np.pi, 2 * np.pi) - np.pi
+        velocity = np.minimum(np.maximum(phys[:, [V, W]], -self._vw_limits), self._vw_limits)
+        scan = np.minimum(self._scan_m * self._scan_scale, np.float32(1.0))
+        return {
+            "scan": scan,
+            "local_map": self._local_map.copy(),
+            "velocity": velocity.astype(np.float32),
+            "pose": pose,
+        }
 
     def _info(self, rewards: bool) -> dict[str, Any]:
-        res2 = self._batch.building_meta[self._batch.robot_building, 2] ** 2
+        res2 = self._slot_arrays()["cell_m2"]
         values = {
             "coverage": self._coverage(),
             "observed_area_m2": self._batch.observed * res2,

@@ -54,3 +54,14 @@ def test_inferred_entrances_replace_the_twins_own_by_the_real_plans_rule():
     assert exterior[0].width_m == pytest.approx(1.2)
     assert out.metadata["inferred_entrances"]["rule"] == "largest hall or lobby"
     assert out.metadata["generator"] == "toy"
+
+
+def test_infer_entrances_runs_end_to_end_and_says_so(real_plans_dir, capsys):
+    plans = str(real_plans_dir / "school" / "Lamuniere1_updated.xml")  # 351 m2
+    args = [plans, "--type", "school", "--twins", "1", "--workers", "1", "--infer-entrances"]
+    assert _load().main(args) == 0
+    out = capsys.readouterr().out
+    assert (
+        "wall on 1 school plans, 1 twin(s) each (seeds 1000 on, entrances inferred as the real plans')" in out
+    )
+    assert "twin - real coverage AUC:" in out

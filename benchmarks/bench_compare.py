@@ -1,17 +1,20 @@
-"""Side by side with another checkout: env step rate against CartPole-v1, and a new office's reset.
+"""Side by side with another checkout: env step rates against CartPole-v1, and a new office's reset.
 
-Runs the same two measurements with this checkout and with ``OTHER`` (a folder holding another
+Runs the same three measurements with this checkout and with ``OTHER`` (a folder holding another
 commit of the repository, e.g. made with ``git worktree add /tmp/old e06a6f2``), alternately,
 each in a fresh process with that checkout first on ``PYTHONPATH``:
 
 1. ``gym.make("OfficeExplore-v0")`` with random actions and ``CartPole-v1`` with random actions,
    the same loop, CPU time, the median of five blocks: steps/s and their ratio;
 2. a new default office: ``make_generator("office")(rng)`` and ``World(building)``, CPU time, the
-   median of 12 seeds (ms).
+   median of 12 seeds (ms);
+3. ``gym.make_vec("OfficeExplore-v0", num_envs=8)`` with random actions, CPU time, the median of
+   three blocks of 300 steps: robot-steps/s and their ratio to CartPole-v1 (whatever vector
+   environment that checkout's ``make_vec`` gives: the native one, or Gymnasium's before it).
 
 Usage::
 
-    .venv/bin/python benchmarks/bench_compare.py /tmp/old            # about a minute
+    .venv/bin/python benchmarks/bench_compare.py /tmp/old            # about two minutes
     .venv/bin/python benchmarks/bench_compare.py /tmp/old --rounds 3
 """
 
@@ -48,6 +51,22 @@ def rate(env_id, n):
         out.append(n / (time.process_time() - start))
     return statistics.median(out)
 
+def vec_rate(env_id, num_envs, n):
+    env = gym.make_vec(env_id, num_envs=num_envs)
+    env.reset(seed=0)
+    env.action_space.seed(0)
+    actions = [env.action_space.sample() for _ in range(n)]
+    for a in actions[:30]:
+        env.step(a)
+    out = []
+    for _ in range(3):
+        start = time.process_time()
+        for a in actions:
+            env.step(a)
+        out.append(num_envs * n / (time.process_time() - start))
+    env.close()
+    return statistics.median(out)
+
 gen = make_generator("office")
 World(gen(np.random.default_rng(100)))
 gen_ms, world_ms = [], []
@@ -59,8 +78,9 @@ for seed in range(12):
     gen_ms.append(1e3 * (middle - start))
     world_ms.append(1e3 * (time.process_time() - middle))
 cartpole, office = rate("CartPole-v1", 50_000), rate("OfficeExplore-v0", 4_000)
-print(json.dumps({"cartpole": cartpole, "office": office, "generation_ms": statistics.median(gen_ms),
-                  "world_ms": statistics.median(world_ms)}))
+vector = vec_rate("OfficeExplore-v0", 8, 300)
+print(json.dumps({"cartpole": cartpole, "office": office, "vector": vector,
+                  "generation_ms": statistics.median(gen_ms), "world_ms": statistics.median(world_ms)}))
 """
 
 
@@ -85,15 +105,17 @@ def main(argv: list[str] | None = None) -> None:
     if not (args.other / "realistic_indoor").is_dir():
         p.error(f"{args.other} holds no realistic_indoor package; give a checkout of this repository")
     print("| checkout | round | OfficeExplore-v0 steps/s | CartPole-v1 steps/s | x CartPole-v1 |"
+          " make_vec N = 8 robot-steps/s | x CartPole-v1 |"
           " generation ms | world build ms | generation + world ms |")  # fmt: skip
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in range(args.rounds):
         for name, checkout in (("other", args.other.resolve()), ("this", here)):
             m = measure(checkout)
             total = m["generation_ms"] + m["world_ms"]
             print(
                 f"| {name} ({checkout}) | {r + 1} | {m['office']:,.0f} | {m['cartpole']:,.0f} | "
-                f"{m['office'] / m['cartpole']:.3f} | {m['generation_ms']:.1f} | {m['world_ms']:.1f} | {total:.1f} |"
+                f"{m['office'] / m['cartpole']:.3f} | {m['vector']:,.0f} | {m['vector'] / m['cartpole']:.3f} | "
+                f"{m['generation_ms']:.1f} | {m['world_ms']:.1f} | {total:.1f} |"
             )
 
 

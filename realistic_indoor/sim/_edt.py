@@ -17,8 +17,8 @@ __all__ = ["MAX_WIDTH", "column_squares", "distance_to_mask", "row_distances", "
 _INF = 1e20
 _FAR = np.float32(1e10)
 """Distance (cells) of a cell with no obstacle cell in reach: the square root of ``_INF``."""
-_MAX_STRETCHES = 8
-"""Most stretches of equal column distance a run is solved by stretch; beyond, by envelope."""
+_MAX_STRETCHES = 32
+"""Most stretches of equal column distance a run is solved by stretch; beyond, point by point."""
 MAX_WIDTH = 2_000_000
 """Widest grid (cells) whose row pass stays exact: its integer products then fit in an int64."""
 
@@ -40,9 +40,9 @@ def _edt(obstacle):  # pragma: no cover - compiled
     h, w = obstacle.shape
     squares = column_squares(obstacle, False)
     out = np.empty((h, w), dtype=np.float32)
-    stack_at, stack_height, nearest = row_scratch(w)
+    stack_at, stack_height = row_scratch(w)
     for r in range(h):
-        row_distances(squares[r], out[r], stack_at, stack_height, nearest)
+        row_distances(squares[r], out[r], stack_at, stack_height)
     return out
 
 
@@ -87,21 +87,22 @@ def _square(x):  # pragma: no cover - compiled
 @njit(cache=True, nogil=True)
 def row_scratch(w):  # pragma: no cover - compiled
     """The scratch arrays :func:`row_distances` takes for rows of ``w`` cells."""
-    stack_at = np.empty(max(w, 2 * _MAX_STRETCHES), dtype=np.int64)
+    stack_at = np.empty(max(w, 4 * _MAX_STRETCHES), dtype=np.int64)
     stack_height = np.empty(max(w, _MAX_STRETCHES), dtype=np.int64)
-    return stack_at, stack_height, np.empty(w)
+    return stack_at, stack_height
 
 
 @njit(cache=True, nogil=True)
-def row_distances(squares, out, stack_at, stack_height, nearest):  # pragma: no cover - compiled
+def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - compiled
     """One row of the distance transform, from its cells' :func:`column_squares`.
 
     Each run of free cells is solved on its own, between the obstacle cells that bound it: no
     cell beyond them can be nearer. In a building the column distances along a run take a
-    few values in long stretches (a room's middle: one), and a cell's nearest obstacle is then
-    found stretch by stretch; runs of more stretches take the lower envelope of the parabolas
-    ``(q - p)² + g(p)``, built and read with integer products instead of the intersections'
-    divisions. The squared distances are whole numbers, so either gives the exact minimum.
+    few values in long stretches (a room's middle: one), and the lower envelope of the
+    stretches gives each cell its nearest one; runs of more stretches take the lower envelope
+    of the parabolas ``(q - p)² + g(p)``. Both are built and read with integer products
+    instead of the intersections' divisions: the squared distances are whole numbers, so
+    either gives the exact minimum.
 
     Args:
         squares: ``(W,)`` float32 row of :func:`column_squares` (0 on obstacle cells).
@@ -109,7 +110,6 @@ def row_distances(squares, out, stack_at, stack_height, nearest):  # pragma: no 
             1e10 where no obstacle cell is in reach.
         stack_at: int64 scratch, from :func:`row_scratch`.
         stack_height: int64 scratch, from :func:`row_scratch`.
-        nearest: float64 scratch, from :func:`row_scratch`.
     """
     w = squares.shape[0]
     q = 0
@@ -122,17 +122,24 @@ def row_distances(squares, out, stack_at, stack_height, nearest):  # pragma: no 
         while q < w and squares[q] != 0.0:
             q += 1
         lo, hi = max(first - 1, 0), min(q, w - 1)
-        if not _stretch_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height, nearest):
+        if not _stretch_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height):
             _run_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height)
 
 
 @njit(cache=True, nogil=True, inline="always")
-def _stretch_distances(squares, out, first, last, lo, hi, ends, level, nearest):  # pragma: no cover
+def _stretch_distances(squares, out, first, last, lo, hi, ints, level):  # pragma: no cover
     """Distances of cells ``first..last`` from stretches of equal ``g`` in columns ``lo..hi``.
 
-    The nearest point of a stretch ``[s, e]`` of level ``g`` to cell ``q`` is ``q`` clamped to
-    it, at squared distance ``g + (q - clamp)²``. False, with nothing written, if the columns
-    hold more than :data:`_MAX_STRETCHES` stretches of finite ``g``.
+    A stretch ``[s, e]`` of level ``g`` is at squared distance ``g + (q - clamp(q, s, e))²``
+    from cell ``q``. Two stretches' difference falls strictly as ``q`` grows (the derivative is
+    ``2 (clamp_left - clamp_right) < 0``), so each stretch is nearest on one interval, in the
+    stretches' order: their lower envelope is built as the parabolas' is, each crossing found
+    by bisection on whole cells, and every cell is then computed once from its own stretch.
+    False, with nothing written, if the columns hold more than :data:`_MAX_STRETCHES`
+    stretches of finite ``g``.
+
+    ``ints`` holds the stretches' ends (``2 n``) and then the envelope's stretch and first cell
+    (``2 n`` more); ``level`` the stretches' ``g``.
     """
     n = 0
     p = lo
@@ -144,23 +151,62 @@ def _stretch_distances(squares, out, first, last, lo, hi, ends, level, nearest):
         if g < _INF:
             if n == _MAX_STRETCHES:
                 return False
-            ends[2 * n], ends[2 * n + 1], level[n] = s, p, np.int64(g)
+            ints[2 * n], ints[2 * n + 1], level[n] = s, p, np.int64(g)
             n += 1
         p += 1
     if n == 0:
         out[first : last + 1] = _FAR
         return True
-    m = last + 1 - first
-    for i in range(m):
-        nearest[i] = np.inf
+    env = 2 * _MAX_STRETCHES  # the envelope: (stretch, first cell it is nearest to) pairs
+    top = -1
     for k in range(n):
-        s, e, g = ends[2 * k] - first, ends[2 * k + 1] - first, np.float64(level[k])
-        for i in range(m):
-            off = max(max(s - i, i - e), 0)
-            nearest[i] = min(nearest[i], g + np.float64(off * off))
-    for i in range(m):
-        out[first + i] = np.float32(np.sqrt(nearest[i]))
+        begin = first
+        while top >= 0:
+            a = ints[env + 2 * top]
+            za = ints[env + 2 * top + 1]
+            if _level_at(ints, level, k, za) <= _level_at(ints, level, a, za):
+                top -= 1  # nearer than the top from where the top begins: the top never is
+                continue
+            left, right = za + 1, last + 1  # first cell where k is at least as near as a
+            while left < right:
+                mid = (left + right) >> 1
+                if _level_at(ints, level, k, mid) <= _level_at(ints, level, a, mid):
+                    right = mid
+                else:
+                    left = mid + 1
+            begin = left
+            break
+        if begin > last:
+            continue
+        top += 1
+        ints[env + 2 * top] = k
+        ints[env + 2 * top + 1] = begin
+    for t in range(top + 1):
+        k = ints[env + 2 * t]
+        z0 = ints[env + 2 * t + 1]
+        z1 = ints[env + 2 * t + 3] - 1 if t < top else last
+        s, e, g = ints[2 * k], ints[2 * k + 1], level[k]
+        if g == 0:  # an obstacle's own column: the distance is the whole offset, no root needed
+            for q in range(z0, min(z1, s - 1) + 1):
+                out[q] = np.float32(s - q)
+            for q in range(max(z0, e + 1), z1 + 1):
+                out[q] = np.float32(q - e)
+            continue
+        for q in range(z0, min(z1, s - 1) + 1):
+            out[q] = np.float32(np.sqrt(np.float64(g + (s - q) * (s - q))))
+        inner = np.float32(np.sqrt(np.float64(g)))
+        for q in range(max(z0, s), min(z1, e) + 1):
+            out[q] = inner
+        for q in range(max(z0, e + 1), z1 + 1):
+            out[q] = np.float32(np.sqrt(np.float64(g + (q - e) * (q - e))))
     return True
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _level_at(ints, level, k, q):  # pragma: no cover - compiled
+    """Squared distance (cells², an integer) from cell ``q`` to stretch ``k``."""
+    off = max(ints[2 * k] - q, q - ints[2 * k + 1], 0)
+    return level[k] + off * off
 
 
 @njit(cache=True, nogil=True, inline="always")

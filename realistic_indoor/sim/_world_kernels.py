@@ -333,9 +333,9 @@ def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # 
     squares = column_squares(grid, RASTER_FREE)
     skip = np.empty((h, w), dtype=np.uint8)
     dist = np.empty(w, dtype=np.float32)
-    stack_at, stack_height, nearest = row_scratch(w)
+    stack_at, stack_height = row_scratch(w)
     for r in range(h):
-        row_distances(squares[r], dist, stack_at, stack_height, nearest)
+        row_distances(squares[r], dist, stack_at, stack_height)
         _skip_row(grid[r], dist, skip[r], squares[r], safety, skip_wall, skip_outside, half, res)
     return skip, squares
 

@@ -67,3 +67,19 @@ def test_distance_field__rows_of_many_stretches_agree_with_scipy():
     obstacle[25:28, 5:295:7] = False  # doors through the comb
     want = distance_transform_edt(~obstacle).astype(np.float32)
     assert np.array_equal(distance_field(obstacle), want)
+
+
+@pytest.mark.parametrize("width", [60, 250, 900])
+def test_distance_field__a_skyline_of_random_steps_agrees_with_scipy(rng, width):
+    # walls hang from the top to random depths in steps of random widths: below them each row's
+    # column distances form stretches of random levels, a deep one often between two shallow
+    # ones (never nearest), up to a few dozen per run (solved by stretch) or a hundred (by point)
+    obstacle = np.zeros((80, width), dtype=bool)
+    obstacle[:, 0] = obstacle[:, -1] = True
+    c = 1
+    while c < width - 1:
+        step = int(rng.integers(1, 13))
+        obstacle[: int(rng.integers(0, 40)), c : c + step] = True
+        c += step
+    want = distance_transform_edt(~obstacle).astype(np.float32)
+    assert np.array_equal(distance_field(obstacle), want)

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from realistic_indoor.building.labels import CORE_FUNCTIONS, SemanticLabel
 from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.plan import C
+from realistic_indoor.generator.sampling import choice_index
 
 if TYPE_CHECKING:
     from collections.abc import Iterable
@@ -39,7 +40,7 @@ def draw_function(
     pool = {k: v for k, v in weights.items() if k in prefer} or dict(weights)
     names = sorted(pool)
     w = [pool[k] * (0.05 if k in avoid else 1.0) for k in names]
-    return names[int(rng.choice(len(names), p=[x / sum(w) for x in w]))]
+    return names[choice_index(rng, [x / sum(w) for x in w])]
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,7 @@ from realistic_indoor.generator.doors import RULES, add_door, add_exterior_door
 from realistic_indoor.generator.functions import draw_function
 from realistic_indoor.generator.geometry import Contact, to_units
 from realistic_indoor.generator.plan import B, C, H, M, Plan, PlanRoom, S
+from realistic_indoor.generator.sampling import choice_index
 
 if TYPE_CHECKING:
     import numpy as np
@@ -79,7 +80,7 @@ def _modules(rng: np.random.Generator, free: set[tuple[int, int]]) -> list[tuple
     for j, i in sorted((j, i) for i, j in free):
         if (i, j) not in free:
             continue
-        w, h = (int(rng.choice(4, p=MODULE_SIDES)) + 1 for _ in range(2))
+        w, h = (choice_index(rng, MODULE_SIDES) + 1 for _ in range(2))
         w = next(k for k in range(w, 0, -1) if all((i + a, j) in free for a in range(k)))
         h = next(
             k for k in range(h, 0, -1) if all((i + a, j + b) in free for a in range(w) for b in range(k))

@@ -13,6 +13,7 @@ from realistic_indoor.generator.doors import exterior_walls
 from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
+from realistic_indoor.generator.sampling import choice_index
 from realistic_indoor.generator.wings.annex import (
     ANNEX_SCALES,
     add_annex,
@@ -188,7 +189,7 @@ def _lay_out(
     hall_area = area_to_units(model.stats(H).area_mean)
     names = sorted(blocks.compositions)
     weights = [blocks.compositions[n] for n in names]
-    shape = names[int(rng.choice(len(names), p=[w / sum(weights) for w in weights]))]
+    shape = names[choice_index(rng, [w / sum(weights) for w in weights])]
     regions = compose(rng, shape, area, dims, blocks, n_halls, hall_area) if shape != "I" else None
     bars = None
     if regions is None and blocks.ring_share and _no_ring(rng, model):

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 from realistic_indoor.building.labels import SemanticLabel
 from realistic_indoor.generator.geometry import Rect, area_to_m2, area_to_units, contact, to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
+from realistic_indoor.generator.sampling import choice_index
 
 if TYPE_CHECKING:
     import numpy as np
@@ -65,7 +66,7 @@ class Budget:
         """A kind drawn in proportion to what is still wanted; once all is placed, to the plan."""
         w = [max(self.want.get(k, 0.0), 0.0) + 0.1 * self.initial.get(k, 0.0) + 1e-3 for k in kinds]
         total = sum(w)
-        return kinds[int(rng.choice(len(kinds), p=[x / total for x in w]))]
+        return kinds[choice_index(rng, [x / total for x in w])]
 
     def take(self, kind: str, n: float = 1.0) -> None:
         """Record that ``n`` units of ``kind`` were placed."""

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import to_units
+from realistic_indoor.generator.sampling import choice_index
 from realistic_indoor.generator.wings.paint import footprint_cells
 from realistic_indoor.generator.wings.skeleton import DIRS
 
@@ -65,7 +66,7 @@ def choose_halls(sk: Skeleton, rng: np.random.Generator, n_halls: int, junction_
     first = straight + [n for n in junctions if len(dirs[n]) == 3]
     if first:
         weights = [1.0 / (1.0 + abs(i - ci) + abs(j - cj)) for i, j in first]
-        sk.halls.add(first[int(rng.choice(len(first), p=[w / sum(weights) for w in weights]))])
+        sk.halls.add(first[choice_index(rng, [w / sum(weights) for w in weights])])
     near = {n for h in sk.halls for n in _around(h, dirs[h])}
     for _ in range(n_halls - len(sk.halls)):
         pick = _next_hall(sk, rng, (junctions, straight + ends), near, junction_share)
@@ -109,7 +110,7 @@ def choose_open_ends(sk: Skeleton, rng: np.random.Generator, p_open: float) -> N
 def _sides(rng: np.random.Generator, dims: Dims, style: WingStyle) -> list[int]:
     kinds = list(style.side_weights)
     w = [style.side_weights[k] for k in kinds]
-    kind = kinds[int(rng.choice(len(kinds), p=[x / sum(w) for x in w]))]
+    kind = kinds[choice_index(rng, [x / sum(w) for x in w])]
 
     def deep() -> int:
         return round(dims.depth * rng.uniform(0.9, 1.12))

@@ -16,6 +16,8 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from realistic_indoor.generator.sampling import choice_index
+
 if TYPE_CHECKING:
     import numpy as np
 
@@ -215,7 +217,7 @@ def sample_shape(rng: np.random.Generator, n_edges: int, weights: dict[str, floa
     if not names:
         names = ["bar"] if n_edges <= SHAPES["bar"][2] else ["grid"]
     p = [weights.get(k, 1.0) for k in names]
-    name = names[int(rng.choice(len(names), p=[w / sum(p) for w in p]))]
+    name = names[choice_index(rng, [w / sum(p) for w in p])]
     spec = SHAPES[name][0](rng, n_edges)
     return _build(spec)
 

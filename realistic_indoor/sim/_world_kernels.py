@@ -14,7 +14,14 @@ from numba import njit
 from realistic_indoor.sim._edt import column_squares, row_distances, row_scratch
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
-__all__ = ["fill_cover", "reachable_from", "ring_spans", "skip_and_clearance", "skip_and_clearance_of"]
+__all__ = [
+    "clear_at_least",
+    "fill_cover",
+    "reachable_from",
+    "ring_spans",
+    "skip_and_clearance",
+    "skip_and_clearance_of",
+]
 
 
 @njit(cache=True, nogil=True)
@@ -338,6 +345,52 @@ def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # 
         row_distances(squares[r], dist, stack_at, stack_height)
         _skip_row(grid[r], dist, skip[r], squares[r], safety, skip_wall, skip_outside, half, res)
     return skip, squares
+
+
+@njit(cache=True, nogil=True)
+def clear_at_least(grid, rows, cols, reach, half, res, least, out):  # pragma: no cover - compiled
+    """Whether the clearance of each cell is at least ``least``, without the whole field.
+
+    The clearance is the one :func:`skip_and_clearance_of` gives a free cell (the distance from
+    its centre to the nearest non-free cell's centre, less half a cell, float32, times ``res``;
+    0 off the free floor and off the grid), found among the cells at most ``reach`` rows and
+    columns away. A cell with no non-free cell within ``reach`` (so farther than ``reach``
+    cells) counts as clear: the caller picks ``reach`` so that such a cell's clearance is
+    certainly at least ``least``.
+
+    Args:
+        grid: ``(H, W)`` uint8 raster codes.
+        rows: ``(N,)`` int64 rows of the cells asked about (any value: off the grid is not clear).
+        cols: ``(N,)`` int64 columns.
+        reach: Search half-width (cells).
+        half: float32 0.5 (cells).
+        res: float32 side of a cell (m).
+        least: Clearance asked for (m).
+        out: ``(N,)`` bool, written.
+    """
+    h, w = grid.shape
+    zero = np.float32(0.0)
+    for i in range(rows.shape[0]):
+        r, c = rows[i], cols[i]
+        if r < 0 or c < 0 or r >= h or c >= w or grid[r, c] != RASTER_FREE:
+            out[i] = least <= 0.0
+            continue
+        best = reach * reach + 1
+        for rr in range(max(r - reach, 0), min(r + reach, h - 1) + 1):
+            dr2 = (rr - r) * (rr - r)
+            if dr2 >= best:
+                continue
+            row = grid[rr]
+            for cc in range(max(c - reach, 0), min(c + reach, w - 1) + 1):
+                if row[cc] != RASTER_FREE:
+                    d2 = dr2 + (cc - c) * (cc - c)
+                    if d2 < best:
+                        best = d2
+        if best > reach * reach:
+            out[i] = True
+            continue
+        d = np.float32(np.sqrt(np.float64(best)))
+        out[i] = np.float64(max(d - half, zero) * res) >= least
 
 
 @njit(cache=True, nogil=True, inline="always")

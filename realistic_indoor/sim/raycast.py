@@ -59,16 +59,20 @@ class Raycaster:
     Args:
         raster: The building's occupancy raster.
         distance_cells: The raster's distance transform (distance from each free cell's centre
-            to the nearest non-free cell's centre, in cells) if already computed; computed
-            here otherwise (about 5 ms for a 2,000 m2 office at 0.05 m).
+            to the nearest non-free cell's centre, in cells) if already computed; otherwise
+            the skip field comes straight from the raster (about 3 ms for a 2,000 m2 office
+            at 0.05 m).
 
     Attributes:
         raster: The raster rays are cast on.
     """
 
     def __init__(self, raster: OccupancyRaster, distance_cells: np.ndarray | None = None) -> None:
-        if distance_cells is None:
-            distance_cells = free_distance_cells(raster)
+        if distance_cells is None:  # one compiled pass, the distance field never stored
+            skip = skip_and_clearance_of(raster.grid, *_skip_codes(raster.resolution_m))[0]
+            skip.setflags(write=False)
+            self._set(raster, skip)
+            return
         self._set(raster, _skip_field(raster.grid, distance_cells)[0])
 
     def _set(self, raster: OccupancyRaster, skip: np.ndarray) -> None:

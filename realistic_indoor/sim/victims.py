@@ -108,7 +108,7 @@ def _one_victim(world: World, rooms: list[Room], rng: np.random.Generator, clear
         for _ in range(_TRIES):
             pts = rng.uniform((x0, y0), (x1, y1), size=(_BATCH, 2))
             ok = shapely.contains_xy(room.polygon, pts[:, 0], pts[:, 1])
-            ok &= world.clearance_at(pts) >= clearance_m
+            ok &= world.is_clear(pts, clearance_m)
             row, col = world.raster.world_to_cell(pts)
             ok &= world.reachable[row, col]  # the raster covers every room's bounds
             if ok.any():

@@ -73,9 +73,26 @@ def test_world__clearance_is_the_distance_to_the_nearest_wall(office):
     assert float(w.clearance_at((-10.0, 0.0))) == 0.0
 
 
-def test_world__memory_is_reported(office):
+def test_world__memory_is_reported_and_the_clearance_kept_only_once_read(office):
     w = World(office)
-    assert w.nbytes >= w.raster.grid.nbytes * 6
+    cells = w.raster.grid.size
+    segments = w.collision_segments.nbytes
+    assert w.nbytes == 3 * cells + segments  # raster, skip field and reachable floor: a byte each
+    w.clearance_at((4.5, 2.5))
+    assert w.nbytes == 7 * cells + segments  # and the clearance, float32
+
+
+@pytest.mark.parametrize("least", [0.0, 0.26, 0.4, 1.0, 1.5])
+def test_world__is_clear_is_the_clearance_at_least(office, rng, least):
+    looked = World(office)
+    read = World(office)
+    xmin, ymin, xmax, ymax = office.bounds
+    points = rng.uniform((xmin - 1, ymin - 1), (xmax + 1, ymax + 1), size=(3000, 2))
+    got = looked.is_clear(points, least)
+    assert "clearance_m" not in looked.__dict__  # answered without the whole floor's clearance
+    assert np.array_equal(got, read.clearance_at(points) >= least)
+    assert got.all() if least == 0.0 else got.any() and not got.all()  # 0 m: every point, walls too
+    assert looked.is_clear(tuple(points[0]), least).shape == ()
 
 
 @pytest.mark.parametrize(

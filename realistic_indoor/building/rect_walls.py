@@ -6,7 +6,8 @@ computed on intervals: the outlines' sides merged per line, the door cuts taken 
 (closed rectangles: a side lying on a cut's edge goes too), and each piece split where another
 piece meets it (a T or a crossing), as the noded overlay leaves it. The result is the same set
 of segments as :func:`realistic_indoor.building.walls.wall_segments` gets from shapely (tested
-on thousands of buildings), in an order of its own, for about a fifth of the time.
+on thousands of buildings), in an order of its own, for about a fifth of the time: the interval
+passes are compiled (:mod:`realistic_indoor.building._rect_kernels`, numba, loaded on first use).
 """
 
 from __future__ import annotations
@@ -39,6 +40,8 @@ def rectilinear_walls(building: Building, gaps: np.ndarray) -> np.ndarray | None
         ``(N, 2, 2)`` float64 segments: horizontal ones (west to east) by line and position,
         then vertical ones (south to north); ``None`` if a side or a cut is slanted.
     """
+    from realistic_indoor.building._rect_kernels import cut_pieces, split_pieces  # numba: only here
+
     cuts = _boxes(gaps)
     if cuts is None:
         return None
@@ -49,10 +52,10 @@ def rectilinear_walls(building: Building, gaps: np.ndarray) -> np.ndarray | None
         return None
     horizontal = _merged(start[flat, 1], start[flat, 0], end[flat, 0])
     vertical = _merged(start[upright & ~flat, 0], start[upright & ~flat, 1], end[upright & ~flat, 1])
-    horizontal = _cut(horizontal, cuts[:, [1, 3, 0, 2]])
-    vertical = _cut(vertical, cuts[:, [0, 2, 1, 3]])
-    h = _split(horizontal, vertical)
-    v = _split(vertical, horizontal)
+    horizontal = cut_pieces(*horizontal, np.ascontiguousarray(cuts[:, [1, 3, 0, 2]]))
+    vertical = cut_pieces(*vertical, np.ascontiguousarray(cuts[:, [0, 2, 1, 3]]))
+    h = split_pieces(*horizontal, *vertical)
+    v = split_pieces(*vertical, *horizontal)
     segments = np.concatenate(
         [np.stack([h[1], h[0], h[2], h[0]], axis=1), np.stack([v[0], v[1], v[0], v[2]], axis=1)]
     ).reshape(-1, 2, 2)
@@ -84,73 +87,8 @@ def _boxes(gaps: np.ndarray) -> np.ndarray | None:
 
 def _merged(line: np.ndarray, a: np.ndarray, b: np.ndarray) -> Pieces:
     """Collinear sides that overlap or touch joined into one piece per stretch of wall."""
+    from realistic_indoor.building._rect_kernels import merge_sides
+
     lo, hi = np.minimum(a, b), np.maximum(a, b)
     order = np.lexsort((lo, line))
-    out_line, out_lo, out_hi = [], [], []
-    for c, x0, x1 in zip(line[order].tolist(), lo[order].tolist(), hi[order].tolist(), strict=True):
-        if out_line and out_line[-1] == c and x0 <= out_hi[-1]:
-            out_hi[-1] = max(out_hi[-1], x1)
-        else:
-            out_line.append(c)
-            out_lo.append(x0)
-            out_hi.append(x1)
-    return np.array(out_line), np.array(out_lo), np.array(out_hi)
-
-
-def _cut(pieces: Pieces, boxes: np.ndarray) -> Pieces:
-    """The pieces less the closed boxes ``(across lo, across hi, along lo, along hi)``.
-
-    A box takes from a piece whose line it reaches (its edges included) what it covers along
-    the line, where that has a length.
-    """
-    line, lo, hi = pieces
-    hit = (
-        (boxes[None, :, 0] <= line[:, None])
-        & (line[:, None] <= boxes[None, :, 1])
-        & (boxes[None, :, 2] < hi[:, None])
-        & (boxes[None, :, 3] > lo[:, None])
-    )
-    piece, box = np.nonzero(hit)
-    if not len(piece):
-        return pieces
-    untouched = ~hit.any(axis=1)
-    out_line, out_lo, out_hi = line[untouched].tolist(), lo[untouched].tolist(), hi[untouched].tolist()
-    along = boxes[:, 2:].tolist()
-    lines, lows, highs, piece = line.tolist(), lo.tolist(), hi.tolist(), piece.tolist()
-    spans: list[tuple[float, float]] = []
-    for k, (i, j) in enumerate(zip(piece, box.tolist(), strict=True)):
-        if k == 0 or i != piece[k - 1]:
-            spans = [(lows[i], highs[i])]
-        a, b = along[j]
-        spans = [
-            part for x0, x1 in spans for part in ((x0, min(x1, a)), (max(x0, b), x1)) if part[1] > part[0]
-        ]
-        if k + 1 == len(piece) or piece[k + 1] != i:
-            out_line += [lines[i]] * len(spans)
-            out_lo += [x0 for x0, _ in spans]
-            out_hi += [x1 for _, x1 in spans]
-    return np.array(out_line), np.array(out_lo), np.array(out_hi)
-
-
-def _split(pieces: Pieces, across: Pieces) -> Pieces:
-    """The pieces cut where a piece of the other direction meets them inside (a T or a crossing)."""
-    line, lo, hi = pieces
-    at, a, b = across
-    meets = (
-        (lo[:, None] < at[None, :])
-        & (at[None, :] < hi[:, None])
-        & (a[None, :] <= line[:, None])
-        & (line[:, None] <= b[None, :])
-    )
-    piece, other = np.nonzero(meets)
-    if not len(piece):
-        return pieces
-    index = np.concatenate([np.arange(len(line)), np.arange(len(line)), piece])
-    point = np.concatenate([lo, hi, at[other]])
-    order = np.lexsort((point, index))
-    index, point = index[order], point[order]
-    keep = np.ones(len(point), dtype=bool)
-    keep[1:] = (index[1:] != index[:-1]) | (point[1:] != point[:-1])  # one cut per point
-    index, point = index[keep], point[keep]
-    same = index[:-1] == index[1:]
-    return line[index[:-1][same]], point[:-1][same], point[1:][same]
+    return merge_sides(line[order], lo[order], hi[order])

@@ -139,7 +139,12 @@ class World:
 
         Returns:
             Bool, one per point (a 0-d array for one point).
+
+        Raises:
+            ConfigError: If ``min_m`` is not a finite number.
         """
+        if not math.isfinite(min_m):
+            raise ConfigError(f"min_m must be a finite number of metres, got {min_m!r}")
         res = self.raster.resolution_m
         reach = math.ceil(min_m / res + 0.5) + 2
         if "clearance_m" in self.__dict__ or reach > _MAX_REACH_CELLS:

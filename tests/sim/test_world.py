@@ -95,6 +95,11 @@ def test_world__is_clear_is_the_clearance_at_least(office, rng, least):
     assert looked.is_clear(tuple(points[0]), least).shape == ()
 
 
+def test_world__is_clear_refuses_a_clearance_that_is_not_a_number(office):
+    with pytest.raises(ConfigError, match="min_m"):
+        World(office).is_clear((4.5, 2.5), float("nan"))
+
+
 @pytest.mark.parametrize(
     "kwargs", [{"resolution_m": 0}, {"start_clearance_m": -1}, {"wall_thickness_m": -0.1}]
 )

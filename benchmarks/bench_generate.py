@@ -88,7 +88,7 @@ def _speed(runs: int, yardstick: float) -> None:
     variants = [(k, {}) for k in SIZES_M2] + [("office", {"model": "paper"}), ("school", {"model": "paper"})]
     for kind, options in variants:
         for area in SIZES_M2[kind]:
-            gen = make_generator(kind, area if kind != "school" or area >= 800 else 800, **options)
+            gen = make_generator(kind, area, **options)
             gen(np.random.default_rng(10_000))
             built = [gen(np.random.default_rng(s)) for s in range(runs)]
             ms = _median_ms(lambda s, g=gen: g(np.random.default_rng(s)), runs)
@@ -100,7 +100,7 @@ def _speed(runs: int, yardstick: float) -> None:
                 f"| {name} | {real_area:,.0f} | {rooms:.0f} | {ms:.1f} | {ms / real_area * 1000:.1f} "
                 f"| {ms / 1000 * yardstick:,.0f} | {check:.1f} |"
             )
-    print("\nSchools start at 800 m2 (their smallest size); the 500 m2 row is an 800 m2 school.\n")
+    print()
 
 
 def _row(table: dict, lab: SemanticLabel) -> list[str]:

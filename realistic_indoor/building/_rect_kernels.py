@@ -79,7 +79,8 @@ def cut_pieces(line, lo, hi, boxes):  # pragma: no cover - compiled
 
 @njit(cache=True, nogil=True, inline="always")
 def _hits(line, lo, hi, box):  # pragma: no cover - compiled
-    return box[0] <= line <= box[1] and box[2] < hi and box[3] > lo
+    """Whether ``box`` takes a length from the piece: it reaches the line and overlaps the piece."""
+    return box[0] <= line <= box[1] and box[2] < hi and box[3] > lo and box[2] < box[3]
 
 
 @njit(cache=True, nogil=True)

@@ -4,10 +4,18 @@ Generated buildings have axis-parallel room outlines and door cuts. Their walls 
 on a few coordinates, and what shapely's union, difference and merge make of them can be
 computed on intervals: the outlines' sides merged per line, the door cuts taken out of them
 (closed rectangles: a side lying on a cut's edge goes too), and each piece split where another
-piece meets it (a T or a crossing), as the noded overlay leaves it. The result is the same set
-of segments as :func:`realistic_indoor.building.walls.wall_segments` gets from shapely (tested
-on thousands of buildings), in an order of its own, for about a fifth of the time: the interval
-passes are compiled (:mod:`realistic_indoor.building._rect_kernels`, numba, loaded on first use).
+piece meets it (a T or a crossing), as the noded overlay leaves it. On generated buildings the
+result is the set of segments :func:`realistic_indoor.building.walls.overlay_walls` gets from
+shapely (tested on thousands), in an order of its own, for about a fifth of the time: the
+interval passes are compiled (:mod:`realistic_indoor.building._rect_kernels`, numba, loaded on
+first use).
+
+Hand-made plans can tell the two apart where shapely follows floating-point noise rather than
+the plan. A door along y (angle pi/2) has a direction of (6e-17, 1), so near a coordinate of 0
+shapely's cut is tilted by that much: where the cut's edge lies on a wall across it, shapely
+keeps that wall under the edge and the interval path takes it away, as both do for the same
+door along x. An isolated room whose outline starts in the middle of a side gets that side
+split by shapely (a ring's start), not by the interval path.
 """
 
 from __future__ import annotations
@@ -37,8 +45,8 @@ def rectilinear_walls(building: Building, gaps: np.ndarray) -> np.ndarray | None
         gaps: ``(G, 4, 2)`` corners of the doors' cuts (m).
 
     Returns:
-        ``(N, 2, 2)`` float64 segments: horizontal ones (west to east) by line and position,
-        then vertical ones (south to north); ``None`` if a side or a cut is slanted.
+        ``(N, 2, 2)`` float64 segments: horizontal ones (west to east), then vertical ones
+        (south to north); ``None`` if a side or a cut is slanted.
     """
     from realistic_indoor.building._rect_kernels import cut_pieces, split_pieces  # numba: only here
 
@@ -48,10 +56,12 @@ def rectilinear_walls(building: Building, gaps: np.ndarray) -> np.ndarray | None
     start, end = _sides(building)
     flat = start[:, 1] == end[:, 1]
     upright = start[:, 0] == end[:, 0]
+    kept = ~(flat & upright)  # a repeated vertex makes a side of no length: no wall
+    start, end, flat, upright = start[kept], end[kept], flat[kept], upright[kept]
     if not np.all(flat | upright):
         return None
     horizontal = _merged(start[flat, 1], start[flat, 0], end[flat, 0])
-    vertical = _merged(start[upright & ~flat, 0], start[upright & ~flat, 1], end[upright & ~flat, 1])
+    vertical = _merged(start[upright, 0], start[upright, 1], end[upright, 1])
     horizontal = cut_pieces(*horizontal, np.ascontiguousarray(cuts[:, [1, 3, 0, 2]]))
     vertical = cut_pieces(*vertical, np.ascontiguousarray(cuts[:, [0, 2, 1, 3]]))
     h = split_pieces(*horizontal, *vertical)

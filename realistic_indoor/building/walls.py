@@ -36,8 +36,10 @@ def wall_segments(building: Building, depth_m: float = DOOR_GAP_DEPTH_M) -> np.n
     axis-parallel (every generated one) is done on intervals
     (:func:`~realistic_indoor.building.rect_walls.rectilinear_walls`: about 0.4 ms for a default
     office); others go to shapely, outlines and door cuts as arrays, one call each, and only
-    door cuts that meet merged (about 2.3 ms for a default office). Both give the same segments
-    (to 1e-12 m), in orders of their own.
+    door cuts that meet merged (about 2.3 ms for a default office). The path goes by the
+    geometry, not by where the plan came from. On generated buildings both give the same
+    segments (to 1e-12 m), in orders of their own; on hand-made plans they can differ where
+    shapely follows floating-point noise (see :mod:`~realistic_indoor.building.rect_walls`).
 
     Args:
         building: The building.

@@ -138,8 +138,8 @@ def _stretch_distances(squares, out, first, last, lo, hi, ints, level):  # pragm
     False, with nothing written, if the columns hold more than :data:`_MAX_STRETCHES`
     stretches of finite ``g``.
 
-    ``ints`` holds the stretches' ends (``2 n``) and then the envelope's stretch and first cell
-    (``2 n`` more); ``level`` the stretches' ``g``.
+    ``ints`` holds the stretches' ends (``2 n`` from index 0) and the envelope's stretch and
+    first cell (``2 n`` from index ``2 * _MAX_STRETCHES``); ``level`` the stretches' ``g``.
     """
     n = 0
     p = lo

@@ -351,12 +351,13 @@ def skip_and_clearance_of(grid, safety, skip_wall, skip_outside, half, res):  # 
 def clear_at_least(grid, rows, cols, reach, half, res, least, out):  # pragma: no cover - compiled
     """Whether the clearance of each cell is at least ``least``, without the whole field.
 
-    The clearance is the one :func:`skip_and_clearance_of` gives a free cell (the distance from
-    its centre to the nearest non-free cell's centre, less half a cell, float32, times ``res``;
-    0 off the free floor and off the grid), found among the cells at most ``reach`` rows and
-    columns away. A cell with no non-free cell within ``reach`` (so farther than ``reach``
-    cells) counts as clear: the caller picks ``reach`` so that such a cell's clearance is
-    certainly at least ``least``.
+    The clearance is the one :func:`skip_and_clearance_of` gives a free cell (:func:`_clearance`
+    of the distance from its centre to the nearest non-free cell's centre; 0 off the free floor
+    and off the grid), found among the cells at most ``reach`` rows and columns away, and
+    compared with ``least`` in float32, as NumPy compares a float32 array with a Python float.
+    A cell with no non-free cell within ``reach`` (so farther than ``reach`` cells) counts as
+    clear: the caller picks ``reach`` so that such a cell's clearance is certainly at least
+    ``least``.
 
     Args:
         grid: ``(H, W)`` uint8 raster codes.
@@ -365,11 +366,10 @@ def clear_at_least(grid, rows, cols, reach, half, res, least, out):  # pragma: n
         reach: Search half-width (cells).
         half: float32 0.5 (cells).
         res: float32 side of a cell (m).
-        least: Clearance asked for (m).
+        least: float32 clearance asked for (m).
         out: ``(N,)`` bool, written.
     """
     h, w = grid.shape
-    zero = np.float32(0.0)
     for i in range(rows.shape[0]):
         r, c = rows[i], cols[i]
         if r < 0 or c < 0 or r >= h or c >= w or grid[r, c] != RASTER_FREE:
@@ -389,8 +389,7 @@ def clear_at_least(grid, rows, cols, reach, half, res, least, out):  # pragma: n
         if best > reach * reach:
             out[i] = True
             continue
-        d = np.float32(np.sqrt(np.float64(best)))
-        out[i] = np.float64(max(d - half, zero) * res) >= least
+        out[i] = _clearance(np.float32(np.sqrt(np.float64(best))), half, res) >= least
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -407,4 +406,13 @@ def _skip_row(codes, dist, skip, clearance, safety, skip_wall, skip_outside, hal
             skip[c] = skip_outside
         else:
             skip[c] = np.uint8(min(max(np.floor(d - safety), zero), top))
-        clearance[c] = max(d - half, zero) * res
+        clearance[c] = _clearance(d, half, res)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _clearance(d, half, res):  # pragma: no cover - compiled
+    """A free cell's clearance (m, float32): ``d`` less half a cell, at least 0, times the side.
+
+    ``d`` is the float32 distance (cells) from the cell's centre to the nearest non-free cell's.
+    """
+    return max(d - half, np.float32(0.0)) * res

@@ -13,7 +13,7 @@ from realistic_indoor.sim._world_kernels import skip_and_clearance, skip_and_cle
 from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL, OccupancyRaster
 
-__all__ = ["RayHits", "Raycaster", "free_distance_cells"]
+__all__ = ["RayHits", "Raycaster", "free_distance_cells", "raster_fields"]
 
 _SKIP_WALL, _SKIP_OUTSIDE = 254, 255
 """Codes of obstacle cells in the skip field; free cells hold their safe step, 0 to 253 cells."""
@@ -69,9 +69,7 @@ class Raycaster:
 
     def __init__(self, raster: OccupancyRaster, distance_cells: np.ndarray | None = None) -> None:
         if distance_cells is None:  # one compiled pass, the distance field never stored
-            skip = skip_and_clearance_of(raster.grid, *_skip_codes(raster.resolution_m))[0]
-            skip.setflags(write=False)
-            self._set(raster, skip)
+            self._set(raster, raster_fields(raster)[0])
             return
         self._set(raster, _skip_field(raster.grid, distance_cells)[0])
 
@@ -93,8 +91,7 @@ class Raycaster:
             nearest wall or outside cell's edge (its centre-to-centre distance less half a
             cell), 0 elsewhere: :attr:`World.clearance_m`.
         """
-        skip, clearance = skip_and_clearance_of(raster.grid, *_skip_codes(raster.resolution_m))
-        skip.setflags(write=False)
+        skip, clearance = raster_fields(raster)
         raycaster = cls.__new__(cls)
         raycaster._set(raster, skip)
         return raycaster, clearance
@@ -190,6 +187,18 @@ class Raycaster:
             out,
         )
         return out
+
+
+def raster_fields(raster: OccupancyRaster) -> tuple[np.ndarray, np.ndarray]:
+    """The raycaster's skip field (read-only) and the clearance of a raster, in one compiled pass.
+
+    Returns:
+        ``(H, W)`` uint8 skip field, and ``(H, W)`` float32 distances (m) from each free cell to
+        the nearest wall or outside cell's edge, 0 elsewhere (:attr:`World.clearance_m`).
+    """
+    skip, clearance = skip_and_clearance_of(raster.grid, *_skip_codes(raster.resolution_m))
+    skip.setflags(write=False)
+    return skip, clearance
 
 
 def free_distance_cells(raster: OccupancyRaster) -> np.ndarray:

@@ -160,3 +160,13 @@ def _door_beside(door):
 
     dx, dy = door.direction
     return replace(door, id=door.id + "-beside", x=door.x + 0.2 * dx, y=door.y + 0.2 * dy)
+
+
+def test_wall_segments__a_repeated_vertex_and_a_door_of_no_width_change_no_wall():
+    # a vertex given twice makes a side of no length, which must not split the wall it lies on;
+    # a door of no width cuts nothing (shapely's overlay agrees on both)
+    room = Room("a", "medium", "office", ((0, 0), (2, 0), (2, 1), (2, 1), (2, 2), (0, 2)))
+    building = Building("office", (room,), (Door("d", "a", None, 1.0, 0.0, 0.0, 0.0),))
+    want = _expect((0, 0, 2, 0), (2, 0, 2, 2), (0, 2, 2, 2), (0, 0, 0, 2))
+    assert _same_segments(wall_segments(building), want)
+    assert _same_segments(_reference_walls(building), want)

@@ -82,17 +82,41 @@ def test_world__memory_is_reported_and_the_clearance_kept_only_once_read(office)
     assert w.nbytes == 7 * cells + segments  # and the clearance, float32
 
 
-@pytest.mark.parametrize("least", [0.0, 0.26, 0.4, 1.0, 1.5])
-def test_world__is_clear_is_the_clearance_at_least(office, rng, least):
-    looked = World(office)
-    read = World(office)
+# 0.475 m at 0.05 m cells and 0.35 m at 0.1 m cells: float32(least) rounds onto a clearance the
+# grid makes, so a float64 comparison would answer otherwise than clearance_at(xy) >= least
+@pytest.mark.parametrize(
+    ("resolution_m", "least"),
+    [
+        (0.05, 0.0),
+        (0.05, 0.26),
+        (0.05, 0.4),
+        (0.05, 0.475),
+        (0.05, 1.0),
+        (0.05, 1.5),
+        (0.1, 0.35),
+        (0.1, 0.95),
+    ],
+)
+def test_world__is_clear_is_the_clearance_at_least(office, rng, resolution_m, least):
+    config = WorldConfig(resolution_m=resolution_m, start_clearance_m=0.3)
+    looked = World(office, config)
+    read = World(office, config)
     xmin, ymin, xmax, ymax = office.bounds
     points = rng.uniform((xmin - 1, ymin - 1), (xmax + 1, ymax + 1), size=(3000, 2))
+    points = np.concatenate([points, np.round(points / resolution_m) * resolution_m])  # cell corners
     got = looked.is_clear(points, least)
     assert "clearance_m" not in looked.__dict__  # answered without the whole floor's clearance
     assert np.array_equal(got, read.clearance_at(points) >= least)
+    assert np.array_equal(read.is_clear(points, least), got)  # the same once the field is read
     assert got.all() if least == 0.0 else got.any() and not got.all()  # 0 m: every point, walls too
     assert looked.is_clear(tuple(points[0]), least).shape == ()
+    assert read.is_clear(tuple(points[0]), least).shape == ()
+
+
+def test_world__is_clear_of_any_clearance_at_most_zero_is_everywhere(office):
+    w = World(office)
+    points = np.array([[4.5, 2.5], [-10.0, 0.0], [0.0, 0.0]])  # on the floor, off the grid, on a wall
+    assert w.is_clear(points, -1e20).all() and w.is_clear(points, 0.0).all()
 
 
 def test_world__is_clear_refuses_a_clearance_that_is_not_a_number(office):

@@ -57,6 +57,12 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument(
         "--plans", dest="max_plans", type=int, default=None, help="use the first N usable plans only"
     )
+    p.add_argument(
+        "--twins",
+        type=int,
+        default=1,
+        help="twins per plan, averaged per plan in the paired differences (default 1)",
+    )
     p.add_argument("--workers", type=int, default=None, help="processes (default: one per core)")
     p.add_argument("--ray", action="store_true", help="run the episodes on Ray (pip install ray)")
     p.add_argument("--ray-address", default=None, help="address of a Ray cluster (default: a local one)")
@@ -104,6 +110,7 @@ def main(argv: list[str] | None = None) -> int:
         resume=args.resume,
         progress=show_progress(),
         meta={"command": _command(argv), "commit": _commit()},
+        twins_per_plan=args.twins,
     )
     print((out / "behaviour_realism.md").read_text(encoding="utf-8"))
     print(f"wrote {', '.join(shown_path(p) for p in study.files.values() if p.parent == out)}")

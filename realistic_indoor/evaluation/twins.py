@@ -2,15 +2,16 @@
 
 A generated building is realistic for a robot when robots behave in it as they do in real
 buildings of the same size. :func:`behaviour_realism` reads a set of real plans, generates one
-twin per plan with the plan's floor area (:func:`~realistic_indoor.generator.generate_like`),
-runs the wall follower, the nearest-frontier and the structure-aware explorers once on every
-plan and every twin, with one step limit for all (through :func:`run_evaluation`: parallel
+twin per plan (or several) with the plan's floor area
+(:func:`~realistic_indoor.generator.generate_like`), runs the wall follower, the
+nearest-frontier and the structure-aware explorers once on every plan and every twin, with one step limit for all (through :func:`run_evaluation`: parallel
 processes, or Ray), and measures per agent and set (``"real"``, ``"twins"``):
 
 - the coverage AUC (mean coverage over the step limit, in ``[0, 1]``) with a 95% bootstrap
   interval over the buildings;
 - the twin-minus-real difference in coverage AUC, paired by plan, with a 95% bootstrap interval
-  (pairing removes the spread between plans: it compares each plan with its own twin);
+  (pairing removes the spread between plans: it compares each plan with its own twins, their
+  mean where there are several);
 - the steps to 90% coverage per 100 m2 of floor, as a median over the buildings. An episode
   that never got there counts as slower than any that did, so the median is "not reached"
   (``NaN``) when half the episodes or more did not get there.
@@ -33,6 +34,7 @@ report, tables and figure.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import warnings
@@ -43,6 +45,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from realistic_indoor.checks import require_int
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.evaluation.aggregate import bootstrap_mean, wilson
 
@@ -113,10 +116,11 @@ class RealPlan:
 
 @dataclass(frozen=True)
 class PlanPair:
-    """A real plan and its generated twin.
+    """A real plan and one of its generated twins.
 
     Attributes:
-        name: The plan's name (:attr:`RealPlan.name`); the twin's file is ``NAME.json``.
+        name: The plan's name (:attr:`RealPlan.name`); the twin's file is ``NAME.json`` (with
+            several twins per plan, ``NAME_0.json``, ``NAME_1.json``, ...: see :attr:`twin_label`).
         plan: The real plan's file.
         twin: The twin's file.
         plan_area_m2: The plan's floor area (m2).
@@ -127,6 +131,8 @@ class PlanPair:
         plan_reachable_m2: Floor of the plan reachable from the robot's start (m2), the floor
             its coverage is a share of (``NaN``: not measured).
         twin_reachable_m2: The same for the twin (m2).
+        twin_name: The twin's own name where a plan has several (``NAME_0``, ``NAME_1``, ...);
+            empty for a plan's only twin.
     """
 
     name: str
@@ -138,6 +144,12 @@ class PlanPair:
     seed: int
     plan_reachable_m2: float = math.nan
     twin_reachable_m2: float = math.nan
+    twin_name: str = ""
+
+    @property
+    def twin_label(self) -> str:
+        """The twin's name: :attr:`twin_name`, or the plan's name for a plan's only twin."""
+        return self.twin_name or self.name
 
     @property
     def cut_off(self) -> bool:
@@ -294,52 +306,60 @@ def _unique_names(plans: list[RealPlan]) -> list[RealPlan]:
 
 
 def make_twins(
-    plans: Sequence[RealPlan], building_type: str, folder: str | Path, seed: int = 0
+    plans: Sequence[RealPlan], building_type: str, folder: str | Path, seed: int = 0, count: int = 1
 ) -> list[PlanPair]:
-    """Generate and save one twin per plan: a ``building_type`` building of the plan's floor area.
+    """Generate and save ``count`` twins per plan: ``building_type`` buildings of the plan's floor area.
 
-    The ``i``-th plan's twin is drawn with seed ``seed + i`` and written to ``folder/NAME.json``.
-    A plan whose area lies outside the generator's limits gets a twin of the nearest limit's
-    area, with a :class:`ClampedAreaWarning`.
+    The ``k``-th twin of the ``i``-th plan is drawn with seed ``seed + i * count + k`` (as
+    :func:`~realistic_indoor.generator.generate_like` numbers them) and written to
+    ``folder/NAME.json`` (one twin) or ``folder/NAME_K.json`` (several, ``K`` from 0). A plan whose area lies
+    outside the generator's limits gets twins of the nearest limit's area, with a
+    :class:`ClampedAreaWarning`.
 
     Args:
         plans: The real plans.
         building_type: The generator (``"office"``, ``"school"``, ...).
         folder: Where the twins are written (created if missing).
         seed: Seed of the first twin, >= 0.
+        count: Twins per plan, >= 1.
 
     Returns:
-        One pair per plan, in order.
+        One pair per twin, plan by plan.
 
     Raises:
-        ConfigError: For an unknown generator, a negative seed, or a folder that cannot be written.
+        ConfigError: For an unknown generator, a negative seed, a count under 1, or a folder
+            that cannot be written.
     """
     from realistic_indoor.generator import generate_like
     from realistic_indoor.io import save
 
-    twins = generate_like(((p.name, p.building) for p in plans), building_type, 1, seed)
+    require_int("make_twins", "count", count, 1)
+    twins = iter(generate_like(((p.name, p.building) for p in plans), building_type, count, seed))
     pairs = []
-    for i, (plan, twin) in enumerate(zip(plans, twins, strict=True)):
-        path = Path(folder) / f"{twin.name}.json"
-        save(twin.building, path)
-        if twin.clamped:
-            warnings.warn(
-                f"{plan.path}: its {twin.plan_area_m2:,.0f} m2 lie outside the {building_type} generator's "
-                f"limits; its twin has {twin.building.area:,.0f} m2",
-                ClampedAreaWarning,
-                stacklevel=2,
+    for i, plan in enumerate(plans):
+        for k in range(count):
+            twin = next(twins)
+            path = Path(folder) / f"{twin.name}.json"
+            save(twin.building, path)
+            if twin.clamped and k == 0:
+                warnings.warn(
+                    f"{plan.path}: its {twin.plan_area_m2:,.0f} m2 lie outside the {building_type} "
+                    f"generator's limits; its twin has {twin.building.area:,.0f} m2",
+                    ClampedAreaWarning,
+                    stacklevel=2,
+                )
+            pairs.append(
+                PlanPair(
+                    plan.name,
+                    plan.path,
+                    shown_path(path),
+                    round(float(plan.building.area), 3),
+                    round(float(twin.building.area), 3),
+                    twin.clamped,
+                    seed + i * count + k,
+                    twin_name=twin.name if count > 1 else "",
+                )
             )
-        pairs.append(
-            PlanPair(
-                plan.name,
-                plan.path,
-                shown_path(path),
-                round(float(plan.building.area), 3),
-                round(float(twin.building.area), 3),
-                twin.clamped,
-                seed + i,
-            )
-        )
     return pairs
 
 
@@ -355,7 +375,8 @@ def with_reachable_floor(pairs: Sequence[PlanPair], env_id: str) -> list[PlanPai
 
     config = preset_config(env_id).world
 
-    def reachable(path: str) -> float:
+    @functools.cache
+    def reachable(path: str) -> float:  # a plan with several twins is measured once
         return round(World(_load_plan(path, False), config).reachable_area_m2, 3)
 
     return [
@@ -366,13 +387,17 @@ def with_reachable_floor(pairs: Sequence[PlanPair], env_id: str) -> list[PlanPai
 def twin_specs(pairs: Sequence[PlanPair], env_id: str, max_steps: int) -> list:
     """The environments of a study: every real plan (set ``real``) and every twin (set ``twins``).
 
-    Labelled ``real:NAME`` and ``twin:NAME``, all with the step limit ``max_steps``.
+    Labelled ``real:NAME`` (once per plan) and ``twin:`` and the twin's :attr:`PlanPair.twin_label`,
+    all with the step limit ``max_steps``.
     """
     from realistic_indoor.evaluation.tasks import EnvSpec
 
     kwargs = {"max_steps": max_steps}
-    real = [EnvSpec(env_id, p.plan, dict(kwargs), label=f"real:{p.name}", group="real") for p in pairs]
-    twins = [EnvSpec(env_id, p.twin, dict(kwargs), label=f"twin:{p.name}", group="twins") for p in pairs]
+    plans = dict.fromkeys((p.name, p.plan) for p in pairs)
+    real = [EnvSpec(env_id, plan, dict(kwargs), label=f"real:{name}", group="real") for name, plan in plans]
+    twins = [
+        EnvSpec(env_id, p.twin, dict(kwargs), label=f"twin:{p.twin_label}", group="twins") for p in pairs
+    ]
     return real + twins
 
 
@@ -395,6 +420,7 @@ def behaviour_realism(
     resume: bool = False,
     progress: bool = False,
     meta: dict[str, Any] | None = None,
+    twins_per_plan: int = 1,
 ) -> BehaviourStudy:
     """Run the reference explorers on real plans and on their twins; write and return the comparison.
 
@@ -409,8 +435,8 @@ def behaviour_realism(
         building_type: Their type, which is also the twins' generator and picks the registered
             id (``office``: ``OfficeExplore-v0``).
         out_dir: The output folder.
-        seed: Seed of the first twin (the ``i``-th plan's twin gets ``seed + i``) and of every
-            episode.
+        seed: Seed of the first twin (the ``k``-th twin of the ``i``-th plan gets
+            ``seed + i * twins_per_plan + k``) and of every episode.
         max_steps: Step limit of every episode (0.2 s steps); ``None``: the registered id's.
         max_plans: Use only the first this many usable plans (``None``: all).
         agents: Agent names and their labels (default :data:`AGENTS`).
@@ -421,6 +447,9 @@ def behaviour_realism(
         resume: Keep the episodes an earlier run into ``out_dir`` finished; run the others.
         progress: Show progress bars.
         meta: More to record in the outputs (the command that ran, the commit).
+        twins_per_plan: Twins generated per plan; each plan's twins are averaged before the
+            paired difference, so more twins take the draw of the twins out of it (one twin
+            leaves the wall follower's mean gap with a standard error of about 0.02).
 
     Returns:
         The study.
@@ -443,9 +472,11 @@ def behaviour_realism(
         isinstance(max_plans, bool) or not isinstance(max_plans, int) or max_plans < 1
     ):
         raise ConfigError(f"max_plans must be an integer >= 1, not {max_plans!r}")
+    require_int("behaviour_realism", "twins_per_plan", twins_per_plan, 1)
     real, skipped, found = read_plans(plans, building_type, strict)
     real = real[:max_plans] if max_plans is not None else real
-    pairs = with_reachable_floor(make_twins(real, building_type, out / "twins", seed), env_id)
+    twins = make_twins(real, building_type, out / "twins", seed, twins_per_plan)
+    pairs = with_reachable_floor(twins, env_id)
     evaluation = run_evaluation(
         list(agents),
         twin_specs(pairs, env_id, steps),
@@ -469,6 +500,7 @@ def behaviour_realism(
             "env_id": env_id,
             "max_steps": steps,
             "seed": seed,
+            "twins_per_plan": twins_per_plan,
             "agents": agents,
             "plans_given": [shown_path(p) for p in ([plans] if isinstance(plans, (str, Path)) else plans)],
             "plan_files": found,
@@ -517,8 +549,9 @@ def episode_rows(results: Sequence[EpisodeResult], pairs: Sequence[PlanPair]) ->
         results: Results of environments labelled as :func:`twin_specs` labels them.
         pairs: The plans and twins.
     """
+    cut = {p.name for p in pairs if p.cut_off}  # a plan is cut off if it or one of its twins is
     where = {f"real:{p.name}": ("real", p, p.plan_area_m2, p.plan_reachable_m2) for p in pairs}
-    where |= {f"twin:{p.name}": ("twins", p, p.twin_area_m2, p.twin_reachable_m2) for p in pairs}
+    where |= {f"twin:{p.twin_label}": ("twins", p, p.twin_area_m2, p.twin_reachable_m2) for p in pairs}
     rows = []
     for r in results:
         kind, pair, area, reachable = where[r.env]
@@ -529,10 +562,11 @@ def episode_rows(results: Sequence[EpisodeResult], pairs: Sequence[PlanPair]) ->
                 "agent": r.agent,
                 "set": kind,
                 "plan": pair.name,
+                "twin": pair.twin_label if kind == "twins" else "",
                 "file": pair.plan if kind == "real" else pair.twin,
                 "area_m2": area,
                 "reachable_m2": reachable,
-                "cut_off": pair.cut_off,
+                "cut_off": pair.name in cut if kind == "real" else pair.cut_off,
                 "seed": r.seed,
                 "steps": r.steps,
                 "max_steps": r.max_steps,
@@ -603,9 +637,9 @@ def summary_rows(rows: Sequence[dict[str, Any]], agents: dict[str, str]) -> list
 
 
 def paired_rows(rows: Sequence[dict[str, Any]], agents: dict[str, str]) -> list[dict[str, Any]]:
-    """Per agent: coverage AUC on each twin minus on its plan, over the plans with both episodes.
+    """Per agent: coverage AUC on each plan's twins (their mean) minus on the plan, over the plans.
 
-    Columns: ``agent``, ``label``, ``pairs``; ``real`` and ``twins`` (mean coverage AUC over
+    Only plans with episodes in both sets count. Columns: ``agent``, ``label``, ``pairs``; ``real`` and ``twins`` (mean coverage AUC over
     those plans); ``difference`` (mean of twin minus real) with ``_low`` and ``_high`` (95%
     bootstrap interval over the plans); ``twin_higher`` (plans whose twin scored higher); and
     ``connected_pairs``, ``connected_difference`` with ``_low`` and ``_high``: the same over
@@ -614,7 +648,11 @@ def paired_rows(rows: Sequence[dict[str, Any]], agents: dict[str, str]) -> list[
     out = []
     for agent, label in agents.items():
         real = {r["plan"]: r["coverage_auc"] for r in rows if r["agent"] == agent and r["set"] == "real"}
-        twin = {r["plan"]: r["coverage_auc"] for r in rows if r["agent"] == agent and r["set"] == "twins"}
+        twins: dict[str, list[float]] = {}
+        for r in rows:
+            if r["agent"] == agent and r["set"] == "twins":
+                twins.setdefault(r["plan"], []).append(r["coverage_auc"])
+        twin = {plan: float(np.mean(aucs)) for plan, aucs in twins.items()}
         cut = {r["plan"] for r in rows if r["cut_off"]}
         plans = [p for p in real if p in twin]
         d = bootstrap_mean([twin[p] - real[p] for p in plans])

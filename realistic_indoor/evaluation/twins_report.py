@@ -82,7 +82,8 @@ def render_report(data: dict[str, Any]) -> str:
         "## Coverage AUC",
         "",
         "Mean coverage over the step limit (1 = everything seen at once), with 95% bootstrap "
-        "intervals over the buildings. *Twins − real* is paired by plan: each plan's twin minus the "
+        "intervals over the buildings. *Twins − real* is paired by plan: each plan's "
+        f"{'twin' if data['meta'].get('twins_per_plan', 1) == 1 else 'twins (their mean)'} minus the "
         "plan, so the spread between plans drops out (* the interval excludes 0).",
         "",
         *_auc_table(data),
@@ -113,19 +114,26 @@ def _setup(data: dict[str, Any]) -> list[str]:
     meta, pairs = data["meta"], data["plans"]
     kind = meta["building_type"]
     low, high = meta["generator_area_limits_m2"]
+    per_plan = meta.get("twins_per_plan", 1)
     seeds = (
         f"seed {meta['seed']}"
         if len(pairs) == 1
         else f"seeds {meta['seed']} to {meta['seed'] + len(pairs) - 1}"
     )
-    clamped = [p for p in pairs if p["clamped"]]
+    plans = list(dict.fromkeys(p["name"] for p in pairs))
+    clamped = list({p["name"]: p for p in pairs if p["clamped"]}.values())
+    twins = (
+        f"one generated {kind} building per plan"
+        if per_plan == 1
+        else f"{per_plan} generated {kind} buildings per plan, averaged per plan in the paired differences"
+    )
     lines = [
-        f"- Real plans: {len(pairs)} {kind} plans from {', '.join(f'`{p}`' for p in meta['plans_given'])} "
+        f"- Real plans: {len(plans)} {kind} plans from {', '.join(f'`{p}`' for p in meta['plans_given'])} "
         f"({meta['plan_files']} plan files; {len(data['skipped'])} left out).",
         *[f"  - left out `{s['source']}`: {s['reason']}" for s in data["skipped"]],
-        f"- Twins: one generated {kind} building per plan with the plan's floor area (the `{kind}` generator, "
+        f"- Twins: {twins}, with the plan's floor area (the `{kind}` generator, "
         f"{seeds}). Plan areas outside the generator's limits of {low:,.0f}-{high:,.0f} m² are clamped "
-        f"to the nearest limit: {len(clamped)} of {len(pairs)}.",
+        f"to the nearest limit: {len(clamped)} of {len(plans)}.",
         *[
             f"  - clamped `{p['name']}`: {p['plan_area_m2']:,.0f} m² plan, {p['twin_area_m2']:,.0f} m² twin"
             for p in clamped
@@ -281,7 +289,7 @@ def _order(rows: Sequence[dict[str, Any]], kind: str) -> list[str]:
 
 def _plan_table(data: dict[str, Any]) -> list[str]:
     agents = data["meta"]["agents"]
-    auc = {(e["agent"], e["set"], e["plan"]): e["coverage_auc"] for e in data["episodes"]}
+    auc = {(e["agent"], e["set"], e.get("twin") or e["plan"]): e["coverage_auc"] for e in data["episodes"]}
     head = "| plan | floor m² | twin m² | reachable | " + " | ".join(
         f"{a} real | {a} twin" for a in agents.values()
     )
@@ -292,9 +300,14 @@ def _plan_table(data: dict[str, Any]) -> list[str]:
         "|---" * (4 + 2 * len(agents)) + "|",
     ]
     for p in data["plans"]:
-        cells = [_value(auc.get((agent, kind, p["name"]))) for agent in agents for kind in ("real", "twins")]
+        twin = p.get("twin_name") or p["name"]
+        cells = [
+            _value(auc.get((agent, kind, p["name"] if kind == "real" else twin)))
+            for agent in agents
+            for kind in ("real", "twins")
+        ]
         notes = [note for note, flag in (("clamped", p["clamped"]), ("cut off", p["cut_off"])) if flag]
-        name = p["name"] + (f" ({', '.join(notes)})" if notes else "")
+        name = twin + (f" ({', '.join(notes)})" if notes else "")
         reach = f"{_share(p, 'plan')} / {_share(p, 'twin')}"
         lines.append(
             f"| {name} | {p['plan_area_m2']:,.0f} | {p['twin_area_m2']:,.0f} | {reach} | {' | '.join(cells)} |"

@@ -343,3 +343,51 @@ def test_analysis__steps_per_reachable_floor_and_cut_off_pairs_left_out_of_conne
     (paired,) = paired_rows(rows, {"wall": "wall follower"})
     assert paired["pairs"] == 2 and paired["difference"] == pytest.approx(0.0)  # +0.3 and -0.3
     assert paired["connected_pairs"] == 1 and paired["connected_difference"] == pytest.approx(0.3)
+
+
+@pytest.fixture(scope="module")
+def two_twin_run(plans, tmp_path_factory):
+    out = tmp_path_factory.mktemp("behaviour2")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        argv = [str(plans), "--small", "--plans", "2", "--twins", "2", "--out", str(out)]
+        assert _load().main(argv) == 0
+    return out
+
+
+def test_two_twins_per_plan__each_plan_once_its_twins_averaged_in_the_pairs(two_twin_run):
+    out = two_twin_run
+    episodes = _csv(out / "episodes.csv")
+    for agent in AGENTS:
+        mine = [e for e in episodes if e["agent"] == agent]
+        assert sorted(e["plan"] for e in mine if e["set"] == "real") == ["office-a", "small-office"]
+        twins = sorted((e["plan"], e["twin"]) for e in mine if e["set"] == "twins")
+        assert twins == [
+            ("office-a", "office-a_0"), ("office-a", "office-a_1"),
+            ("small-office", "small-office_0"), ("small-office", "small-office_1"),
+        ]  # fmt: skip
+    assert sorted(p.name for p in (out / "twins").iterdir()) == [
+        "office-a_0.json", "office-a_1.json", "small-office_0.json", "small-office_1.json",
+    ]  # fmt: skip
+    auc = {(e["agent"], e["set"], e["twin"] or e["plan"]): float(e["coverage_auc"]) for e in episodes}
+    paired = {r["agent"]: r for r in _csv(out / "paired.csv")}
+    for agent in AGENTS:
+        diff = [
+            (auc[(agent, "twins", f"{p}_0")] + auc[(agent, "twins", f"{p}_1")]) / 2 - auc[(agent, "real", p)]
+            for p in ("office-a", "small-office")
+        ]
+        assert paired[agent]["pairs"] == "2"
+        assert float(paired[agent]["difference"]) == pytest.approx(sum(diff) / 2, abs=1e-5)
+    summary = {(r["agent"], r["set"]): r["episodes"] for r in _csv(out / "summary.csv")}
+    assert {summary[(a, "real")] for a in AGENTS} == {"2"} and {summary[(a, "twins")] for a in AGENTS} == {
+        "4"
+    }
+    report = (out / "behaviour_realism.md").read_text()
+    assert "Real plans: 2 office plans" in report and "2 generated office buildings per plan" in report
+    assert "| office-a_1 |" in report and "each plan's twins (their mean) minus the plan" in report
+
+
+def test_twins_per_plan_under_one__one_line_error(plans, tmp_path, capsys):
+    code = _run([str(plans), "--small", "--twins", "0", "--out", str(tmp_path / "out")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code != 0 and len(err) == 1 and "twins_per_plan must be an integer >= 1, got 0" in err[0]

@@ -151,6 +151,8 @@ def _cut_off_lines(data: dict[str, Any]) -> list[str]:
     """The pairs whose start reaches less than the connected share of the floor, with the shares."""
     from realistic_indoor.evaluation.twins import CONNECTED
 
+    if data["meta"].get("twins_per_plan", 1) > 1:
+        return _cut_off_plans(data)
     cut = [p for p in data["plans"] if p["cut_off"]]
     lines = [
         f"- Reachable floor: the robot's start reaches less than {CONNECTED:.0%} of the floor in "
@@ -165,6 +167,37 @@ def _cut_off_lines(data: dict[str, Any]) -> list[str]:
     return lines
 
 
+def _cut_off_plans(data: dict[str, Any]) -> list[str]:
+    """:func:`_cut_off_lines` with several twins per plan: a line per plan, its twins' shares on it."""
+    from realistic_indoor.evaluation.twins import CONNECTED
+
+    names = _cut_names(data)
+    plans = list(dict.fromkeys(p["name"] for p in data["plans"]))
+    lines = [
+        f"- Reachable floor: the robot's start reaches less than {CONNECTED:.0%} of the floor in "
+        f"{len(names)} of the {len(plans)} plans or their twins (the start lies in a part cut off from "
+        "the rest; coverage, a share of the reachable floor, then measures only that part)."
+    ]
+    for name in names:
+        pairs = [p for p in data["plans"] if p["name"] == name]
+        twins = ", ".join(_share(p, "twin") for p in pairs)
+        lines.append(
+            f"  - cut off `{name}`: the start reaches {_share(pairs[0], 'plan')} of the plan's floor "
+            f"and {twins} of its twins'"
+        )
+    return lines
+
+
+def _cut_names(data: dict[str, Any]) -> list[str]:
+    """The plans with a cut-off pair (the plan's start or a twin's), each once, in order."""
+    return list(dict.fromkeys(p["name"] for p in data["plans"] if p["cut_off"]))
+
+
+def _cut_noun(data: dict[str, Any]) -> str:
+    """What the differences without cut-off starts leave out: pairs, or plans with several twins."""
+    return "cut-off pair" if data["meta"].get("twins_per_plan", 1) == 1 else "cut-off plan"
+
+
 def _share(pair: dict[str, Any], kind: str) -> str:
     """Reachable share of the floor of the plan or twin of a pair, as ``97%`` (``-``: not measured)."""
     share = pair[f"{kind}_reachable_m2"] / pair[f"{kind}_area_m2"]
@@ -173,12 +206,12 @@ def _share(pair: dict[str, Any], kind: str) -> str:
 
 def _connected_table(data: dict[str, Any]) -> list[str]:
     """Twin minus real without the cut-off pairs (nothing when there are none)."""
-    cut = [p["name"] for p in data["plans"] if p["cut_off"]]
+    cut = _cut_names(data)  # with one twin per plan, the plans of the cut-off pairs
     if not cut:
         return []
     lines = [
         "",
-        f"Without the {_count(len(cut), 'cut-off pair')} ({', '.join(f'`{c}`' for c in cut)}):",
+        f"Without the {_count(len(cut), _cut_noun(data))} ({', '.join(f'`{c}`' for c in cut)}):",
         "",
         "| agent | pairs | twins − real (paired) |",
         "|---|---|---|",
@@ -268,10 +301,10 @@ def _findings(data: dict[str, Any]) -> list[str]:
                 f"- {p['label']}: no difference shown over {p['pairs']} plans: coverage AUC {p['twins']:.2f} "
                 f"on the twins against {p['real']:.2f}, twin minus real {diff} (the interval holds 0)."
             )
-    cut = sum(p["cut_off"] for p in data["plans"])
+    cut = len(_cut_names(data))
     if cut:
         parts = [f"{p['label']} {_difference(_connected(p))}" for p in data["paired"]]
-        lines.append(f"- Without the {_count(cut, 'cut-off pair')}, twin minus real: {'; '.join(parts)}.")
+        lines.append(f"- Without the {_count(cut, _cut_noun(data))}, twin minus real: {'; '.join(parts)}.")
     orders = {kind: _order(data["summary"], kind) for kind in ("real", "twins")}
     same = "the same order" if orders["real"] == orders["twins"] else "a different order"
     lines.append(
@@ -359,7 +392,7 @@ def draw_figure(data: dict[str, Any], path: str | Path) -> Path:
     left.legend(fontsize=7)
     left.grid(axis="y", alpha=0.3)
     paired = {p["agent"]: p for p in data["paired"]}
-    cut = sum(p["cut_off"] for p in data["plans"])
+    cut = len(_cut_names(data))
     variants = [("", "all pairs", "o", 0.0)]
     if cut:
         variants = [("", "all pairs", "o", -0.1), ("connected_", f"without {cut} cut off", "s", 0.1)]

@@ -345,12 +345,16 @@ def test_analysis__steps_per_reachable_floor_and_cut_off_pairs_left_out_of_conne
     assert paired["connected_pairs"] == 1 and paired["connected_difference"] == pytest.approx(0.3)
 
 
+PLANS = ("office-a", "small-office", "split-office")
+"""The usable office plans of the fixture, in file order."""
+
+
 @pytest.fixture(scope="module")
 def two_twin_run(plans, tmp_path_factory):
     out = tmp_path_factory.mktemp("behaviour2")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        argv = [str(plans), "--small", "--plans", "2", "--twins", "2", "--out", str(out)]
+        argv = [str(plans), "--small", "--plans", "3", "--twins", "2", "--out", str(out)]
         assert _load().main(argv) == 0
     return out
 
@@ -360,31 +364,31 @@ def test_two_twins_per_plan__each_plan_once_its_twins_averaged_in_the_pairs(two_
     episodes = _csv(out / "episodes.csv")
     for agent in AGENTS:
         mine = [e for e in episodes if e["agent"] == agent]
-        assert sorted(e["plan"] for e in mine if e["set"] == "real") == ["office-a", "small-office"]
+        assert sorted(e["plan"] for e in mine if e["set"] == "real") == list(PLANS)
         twins = sorted((e["plan"], e["twin"]) for e in mine if e["set"] == "twins")
-        assert twins == [
-            ("office-a", "office-a_0"), ("office-a", "office-a_1"),
-            ("small-office", "small-office_0"), ("small-office", "small-office_1"),
-        ]  # fmt: skip
-    assert sorted(p.name for p in (out / "twins").iterdir()) == [
-        "office-a_0.json", "office-a_1.json", "small-office_0.json", "small-office_1.json",
-    ]  # fmt: skip
+        assert twins == [(p, f"{p}_{k}") for p in PLANS for k in (0, 1)]
+    assert sorted(f.name for f in (out / "twins").iterdir()) == [
+        f"{p}_{k}.json" for p in PLANS for k in (0, 1)
+    ]
     auc = {(e["agent"], e["set"], e["twin"] or e["plan"]): float(e["coverage_auc"]) for e in episodes}
     paired = {r["agent"]: r for r in _csv(out / "paired.csv")}
     for agent in AGENTS:
         diff = [
             (auc[(agent, "twins", f"{p}_0")] + auc[(agent, "twins", f"{p}_1")]) / 2 - auc[(agent, "real", p)]
-            for p in ("office-a", "small-office")
+            for p in PLANS
         ]
-        assert paired[agent]["pairs"] == "2"
-        assert float(paired[agent]["difference"]) == pytest.approx(sum(diff) / 2, abs=1e-5)
+        assert paired[agent]["pairs"] == "3"
+        assert float(paired[agent]["difference"]) == pytest.approx(sum(diff) / 3, abs=1e-5)
+        assert paired[agent]["connected_pairs"] == "2"  # the split office's plan is cut off
+        assert float(paired[agent]["connected_difference"]) == pytest.approx(sum(diff[:2]) / 2, abs=1e-5)
     summary = {(r["agent"], r["set"]): r["episodes"] for r in _csv(out / "summary.csv")}
-    assert {summary[(a, "real")] for a in AGENTS} == {"2"} and {summary[(a, "twins")] for a in AGENTS} == {
-        "4"
-    }
+    assert {summary[(a, "real")] for a in AGENTS} == {"3"}
+    assert {summary[(a, "twins")] for a in AGENTS} == {"6"}
     report = (out / "behaviour_realism.md").read_text()
-    assert "Real plans: 2 office plans" in report and "2 generated office buildings per plan" in report
+    assert "Real plans: 3 office plans" in report and "2 generated office buildings per plan" in report
     assert "| office-a_1 |" in report and "each plan's twins (their mean) minus the plan" in report
+    assert "in 1 of the 3 plans or their twins" in report
+    assert "Without the 1 cut-off plan (`split-office`)" in report
 
 
 def test_twins_per_plan_under_one__one_line_error(plans, tmp_path, capsys):

@@ -83,7 +83,7 @@ def render_report(data: dict[str, Any]) -> str:
         "",
         "Mean coverage over the step limit (1 = everything seen at once), with 95% bootstrap "
         "intervals over the buildings. *Twins − real* is paired by plan: each plan's "
-        f"{'twin' if data['meta'].get('twins_per_plan', 1) == 1 else 'twins (their mean)'} minus the "
+        f"{'twin' if _twins_per_plan(data) == 1 else 'twins (their mean)'} minus the "
         "plan, so the spread between plans drops out (* the interval excludes 0).",
         "",
         *_auc_table(data),
@@ -114,7 +114,7 @@ def _setup(data: dict[str, Any]) -> list[str]:
     meta, pairs = data["meta"], data["plans"]
     kind = meta["building_type"]
     low, high = meta["generator_area_limits_m2"]
-    per_plan = meta.get("twins_per_plan", 1)
+    per_plan = _twins_per_plan(data)
     seeds = (
         f"seed {meta['seed']}"
         if len(pairs) == 1
@@ -125,13 +125,13 @@ def _setup(data: dict[str, Any]) -> list[str]:
     twins = (
         f"one generated {kind} building per plan"
         if per_plan == 1
-        else f"{per_plan} generated {kind} buildings per plan, averaged per plan in the paired differences"
+        else f"{per_plan} generated {kind} buildings per plan, averaged per plan in the paired differences,"
     )
     lines = [
         f"- Real plans: {len(plans)} {kind} plans from {', '.join(f'`{p}`' for p in meta['plans_given'])} "
         f"({meta['plan_files']} plan files; {len(data['skipped'])} left out).",
         *[f"  - left out `{s['source']}`: {s['reason']}" for s in data["skipped"]],
-        f"- Twins: {twins}, with the plan's floor area (the `{kind}` generator, "
+        f"- Twins: {twins} with the plan's floor area (the `{kind}` generator, "
         f"{seeds}). Plan areas outside the generator's limits of {low:,.0f}-{high:,.0f} m² are clamped "
         f"to the nearest limit: {len(clamped)} of {len(plans)}.",
         *[
@@ -148,44 +148,36 @@ def _setup(data: dict[str, Any]) -> list[str]:
 
 
 def _cut_off_lines(data: dict[str, Any]) -> list[str]:
-    """The pairs whose start reaches less than the connected share of the floor, with the shares."""
+    """The plans whose start, or a twin's, reaches less than the connected share of the floor.
+
+    With one twin per plan these are the cut-off pairs; with several, a line per plan gives its
+    twins' shares together.
+    """
     from realistic_indoor.evaluation.twins import CONNECTED
 
-    if data["meta"].get("twins_per_plan", 1) > 1:
-        return _cut_off_plans(data)
-    cut = [p for p in data["plans"] if p["cut_off"]]
-    lines = [
-        f"- Reachable floor: the robot's start reaches less than {CONNECTED:.0%} of the floor in "
-        f"{len(cut)} of the {len(data['plans'])} pairs (the start lies in a part cut off from the rest; "
-        "coverage, a share of the reachable floor, then measures only that part)."
-    ]
-    lines += [
-        f"  - cut off `{p['name']}`: the start reaches {_share(p, 'plan')} of the plan's floor and "
-        f"{_share(p, 'twin')} of the twin's"
-        for p in cut
-    ]
-    return lines
-
-
-def _cut_off_plans(data: dict[str, Any]) -> list[str]:
-    """:func:`_cut_off_lines` with several twins per plan: a line per plan, its twins' shares on it."""
-    from realistic_indoor.evaluation.twins import CONNECTED
-
+    one = _twins_per_plan(data) == 1
     names = _cut_names(data)
     plans = list(dict.fromkeys(p["name"] for p in data["plans"]))
     lines = [
         f"- Reachable floor: the robot's start reaches less than {CONNECTED:.0%} of the floor in "
-        f"{len(names)} of the {len(plans)} plans or their twins (the start lies in a part cut off from "
-        "the rest; coverage, a share of the reachable floor, then measures only that part)."
+        f"{len(names)} of the {len(plans)} {'pairs' if one else 'plans or their twins'} (the start lies "
+        "in a part cut off from the rest; coverage, a share of the reachable floor, then measures only "
+        "that part)."
     ]
+    whose = "the twin's" if one else "its twins'"
     for name in names:
         pairs = [p for p in data["plans"] if p["name"] == name]
         twins = ", ".join(_share(p, "twin") for p in pairs)
         lines.append(
             f"  - cut off `{name}`: the start reaches {_share(pairs[0], 'plan')} of the plan's floor "
-            f"and {twins} of its twins'"
+            f"and {twins} of {whose}"
         )
     return lines
+
+
+def _twins_per_plan(data: dict[str, Any]) -> int:
+    """Twins drawn per plan (1 in studies written before the option)."""
+    return data["meta"].get("twins_per_plan", 1)
 
 
 def _cut_names(data: dict[str, Any]) -> list[str]:
@@ -195,7 +187,7 @@ def _cut_names(data: dict[str, Any]) -> list[str]:
 
 def _cut_noun(data: dict[str, Any]) -> str:
     """What the differences without cut-off starts leave out: pairs, or plans with several twins."""
-    return "cut-off pair" if data["meta"].get("twins_per_plan", 1) == 1 else "cut-off plan"
+    return "cut-off pair" if _twins_per_plan(data) == 1 else "cut-off plan"
 
 
 def _share(pair: dict[str, Any], kind: str) -> str:

@@ -395,3 +395,9 @@ def test_twins_per_plan_under_one__one_line_error(plans, tmp_path, capsys):
     code = _run([str(plans), "--small", "--twins", "0", "--out", str(tmp_path / "out")])
     err = capsys.readouterr().err.strip().splitlines()
     assert code != 0 and len(err) == 1 and "twins_per_plan must be an integer >= 1, got 0" in err[0]
+
+
+def test_small_run__one_twin_per_plan_keeps_the_one_twin_wording(small_run):
+    report = (small_run[0] / "behaviour_realism.md").read_text()
+    assert "- Twins: one generated office building per plan with the plan's floor area" in report
+    assert "each plan's twin minus the plan" in report and "cut-off pair" in report

@@ -79,23 +79,6 @@ class Raycaster:
         self._scale = 1.0 / raster.resolution_m
         self._x0, self._y0 = raster.origin
 
-    @classmethod
-    def with_clearance(cls, raster: OccupancyRaster) -> tuple[Raycaster, np.ndarray]:
-        """A raycaster and the clearance of every cell, from one distance transform.
-
-        Args:
-            raster: The building's occupancy raster.
-
-        Returns:
-            The raycaster, and ``(H, W)`` float32 distances (m) from each free cell to the
-            nearest wall or outside cell's edge (its centre-to-centre distance less half a
-            cell), 0 elsewhere: :attr:`World.clearance_m`.
-        """
-        skip, clearance = raster_fields(raster)
-        raycaster = cls.__new__(cls)
-        raycaster._set(raster, skip)
-        return raycaster, clearance
-
     @property
     def nbytes(self) -> int:
         """Memory held by the raycaster's skip field (bytes): one byte per cell."""

@@ -148,9 +148,10 @@ class World:
         if not math.isfinite(min_m):
             raise ConfigError(f"min_m must be a finite number of metres, got {min_m!r}")
         res = self.raster.resolution_m
-        reach = max(math.ceil(min_m / res + 0.5) + 2, 0) if min_m < _MAX_REACH_CELLS * res else None
-        if "clearance_m" in self.__dict__ or reach is None or reach > _MAX_REACH_CELLS:
+        cells = min_m / res + 0.5  # centre to an obstacle cell's centre (cells), at the least
+        if "clearance_m" in self.__dict__ or math.ceil(cells) + 2 > _MAX_REACH_CELLS:
             return np.asarray(self.clearance_at(xy) >= min_m)
+        reach = max(math.ceil(cells) + 2, 0)
         row, col = self.raster.world_to_cell(xy)
         out = np.empty(np.shape(row), dtype=bool)
         rows = np.ascontiguousarray(np.ravel(row), dtype=np.int64)

@@ -3,8 +3,11 @@
 The night zone is one or more strips, each a hallway with bedrooms, bathrooms and closets on
 both sides; the day zone is a column with the kitchen and the living or dining room, and an
 entrance (a short corridor) or a hall between it and the night zone, which every hallway
-starts from. The program (how many rooms of each label) is drawn from the model's label shares
-for the requested area, sizes from its areas.
+starts from. Where that makes the house nearer square, it is laid out in two rows instead: the
+kitchen, the entrance and the night zone below, the living rooms and the hall across the row
+above (a night zone of one band beside the day zone makes a long, thin house). The program
+(how many rooms of each label) is drawn from the model's label shares for the requested area,
+sizes from its areas.
 """
 
 from __future__ import annotations
@@ -129,8 +132,8 @@ BAND_M = (2.8, 4.2)
 """Depth of the room bands on either side of a hallway (m)."""
 ASPECT = (1.0, 1.5)
 """Range of the drawn length-to-depth ratio a house's strips are chosen for."""
-TWO_STRIPS_MIN_ROOMS = 4
-"""Fewest night rooms for two strips side by side."""
+MIN_STRIP_ROOMS = 2
+"""Fewest night rooms per strip where there are several; more than two strips need a hall."""
 HALLWAY_WIDTH_M = (1.1, 1.8)
 """Narrowest and widest hallway (m); between them, the width of the model's mean corridor."""
 MIN_WIDTH = to_units(1.6)
@@ -315,10 +318,11 @@ def _split(total: int, weights: list[float], least: int = 0) -> list[int]:
 
 
 def _strips(rng: np.random.Generator, prog: Program, corridor: int, area_m2: float) -> list[Strip]:
-    """Night rooms dealt to one strip or two side by side.
+    """Night rooms dealt to strips side by side.
 
-    One strip or two, whichever makes the house's proportions nearer a drawn aspect ratio
-    (:data:`ASPECT`: houses are compact); two need :data:`TWO_STRIPS_MIN_ROOMS` night rooms.
+    As many strips as make the house's proportions nearest a drawn aspect ratio (:data:`ASPECT`:
+    houses are compact), with at least :data:`MIN_STRIP_ROOMS` night rooms each; more than two
+    only in a house with a hall, which every hallway starts from.
     """
     front_d, back_d = (to_units(rng.uniform(*BAND_M)) for _ in range(2))
     target = rng.uniform(*ASPECT)
@@ -329,7 +333,8 @@ def _strips(rng: np.random.Generator, prog: Program, corridor: int, area_m2: flo
         length = area_to_units(area_m2) / depth
         return abs(abs(math.log(length / depth)) - math.log(target))
 
-    n_strips = 2 if len(prog.night) >= TWO_STRIPS_MIN_ROOMS and miss(2) < miss(1) else 1
+    most = len(prog.night) // MIN_STRIP_ROOMS if prog.hall else min(len(prog.night) // MIN_STRIP_ROOMS, 2)
+    n_strips = min(range(1, max(most, 1) + 1), key=miss)
     strips = [[[], []] for _ in range(n_strips)]
     loads = [[0.0, 0.0] for _ in range(n_strips)]
     for room in sorted(prog.night, key=lambda r: -r.area_m2):
@@ -396,14 +401,114 @@ def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeMod
         if x_day <= spare or not (_drop_night_room(prog) or _shrink_day_zone(prog, spare / x_day)):
             break
     plan = Plan()
-    _day_zone(plan, rng, prog, strips[0].front_depth + corridor, depth, entry_w)
     night_len = max(round(area_to_units(area_m2) / depth) - x_day, least, MIN_NIGHT_LENGTH)
-    hallways = _night_zone(plan, strips, corridor, x_day, night_len)
+    rows = _rows(prog, strips, depth, entry_w, area_m2)
+    if rows is not None and _elongation(*rows.size) < _elongation(x_day + night_len, depth):
+        hallways = _rows_zones(plan, prog, strips, corridor, entry_w, rows)
+    else:
+        _day_zone(plan, rng, prog, strips[0].front_depth + corridor, depth, entry_w)
+        hallways = _night_zone(plan, strips, corridor, x_day, night_len)
     fronts = corridor_fronts(plan, hallways)
     segments = segment_corridors(hallways, prog.hallways, rng, 2 * corridor, [], fronts, DOOR_NEED)
     for seg in segments:
         plan.add(PlanRoom([seg], C, function="hallway", role="corridor"))
     return plan
+
+
+class Rows(NamedTuple):
+    """Sizes of a house in two rows: kitchen, entrance and night zone below; living space above.
+
+    Attributes:
+        kitchen: Width of the kitchen in the lower row (units), 0 where it is in the upper row.
+        night: Length of the night zone (units).
+        top: Depth of the upper row (units).
+        width: The house's width (units).
+        depth: Depth of the lower row, the night zone's (units).
+    """
+
+    kitchen: int
+    night: int
+    top: int
+    width: int
+    depth: int
+
+    @property
+    def size(self) -> tuple[int, int]:
+        """Width and depth of the house (units)."""
+        return self.width, self.depth + self.top
+
+
+def _elongation(width: float, depth: float) -> float:
+    """How far a ``width`` by ``depth`` rectangle is from a square: ``|log(width / depth)|``."""
+    return abs(math.log(width / depth))
+
+
+def _natural_night_length(strips: list[Strip]) -> int:
+    """Length of the longest band with every room as wide as its area needs, or its least width (units)."""
+    return max(
+        sum(
+            max(round(area_to_units(r.area_m2) / depth), MIN_WIDTH if r.label is S else MIN_ORDINARY_WIDTH)
+            for r in rooms
+        )
+        for strip in strips
+        for rooms, depth in ((strip.front, strip.front_depth), (strip.back, strip.back_depth))
+        if rooms
+    )
+
+
+def _rows(prog: Program, strips: list[Strip], depth: int, entry_w: int, area_m2: float) -> Rows | None:
+    """Sizes of the two-row layout, or ``None`` where its upper row would be too shallow.
+
+    A night zone of a single band is shallow: beside the day zone it makes a long, thin house. In
+    two rows, the entrance and the night zone (at its natural length) share the lower row, as
+    deep as the night zone, with the kitchen beside them; the living rooms and the hall take the
+    row above, across the whole width. Where that leaves the upper row too shallow, the kitchen
+    moves up into it.
+
+    Args:
+        prog: The program.
+        strips: The night zone's strips.
+        depth: Depth of the night zone (units).
+        entry_w: Width of the entrance (units).
+        area_m2: The house's floor area (m2).
+    """
+    night = max(_natural_night_length(strips), MIN_NIGHT_LENGTH)
+    least_top = MIN_HALL_WIDTH if prog.hall else MIN_DAY_ROOM
+    for kitchen in (max(round(area_to_units(prog.kitchen) / depth), MIN_DAY_ROOM), 0):
+        width = kitchen + entry_w + night
+        top = round((area_to_units(area_m2) - width * depth) / width)
+        if top >= least_top:
+            return Rows(kitchen, night, top, width, depth)
+    return None
+
+
+def _rows_zones(
+    plan: Plan, prog: Program, strips: list[Strip], corridor: int, entry_w: int, rows: Rows
+) -> list[Rect]:
+    """Lay out a house in two rows (see :func:`_rows`); returns the night zone's hallways.
+
+    The lower row holds the kitchen (unless it is in the upper row), the entrance and the night
+    zone, whose hallways start from the entrance. The upper row holds, side by side in
+    proportion to their areas, the living rooms and the hall, the hall above the entrance and
+    the night zone; or, with the kitchen in it, the hall above the entrance, then the living
+    rooms, then the kitchen.
+    """
+    depth = rows.depth
+    hall = [ProgramRoom(H, "hall", prog.hall)] if prog.hall else []
+    if rows.kitchen:
+        plan.add(PlanRoom([(0, 0, rows.kitchen, depth)], M, function="kitchen", role="kitchen"))
+        upper = [*prog.living, *hall]
+    else:
+        upper = [*hall, *prog.living, ProgramRoom(M, "kitchen", prog.kitchen)]
+    x = rows.kitchen
+    plan.add(PlanRoom([(x, 0, x + entry_w, depth)], C, function="entrance", role="lobby"))
+    hallways = _night_zone(plan, strips, corridor, x + entry_w, rows.night)
+    x = 0
+    for r, w in zip(upper, _split(rows.width, [r.area_m2 for r in upper], MIN_DAY_ROOM), strict=True):
+        role = "hall" if r.label is H else "kitchen" if r.function == "kitchen" else "living"
+        plan.add(PlanRoom([(x, depth, x + w, depth + rows.top)], r.label, function=r.function, role=role))
+        x += w
+    return hallways
 
 
 def _night_zone(plan: Plan, strips: list[Strip], corridor: int, x0: int, length: int) -> list[Rect]:
@@ -514,12 +619,16 @@ def _day_zone(
 
 
 def _living(plan: Plan, prog: Program, box: Rect) -> None:
-    """The living rooms side by side in ``box`` (units), widths in proportion to their areas."""
+    """The living rooms side by side along the longer side of ``box`` (units), in proportion to their areas."""
     x0, y0, x1, y1 = box
-    x = x0
-    for r, w in zip(prog.living, _split(x1 - x0, [r.area_m2 for r in prog.living]), strict=True):
-        plan.add(PlanRoom([(x, y0, x + w, y1)], r.label, function=r.function, role="living"))
-        x += w
+    along_x = x1 - x0 >= y1 - y0
+    at = x0 if along_x else y0
+    for r, w in zip(
+        prog.living, _split(max(x1 - x0, y1 - y0), [r.area_m2 for r in prog.living]), strict=True
+    ):
+        rect = (at, y0, at + w, y1) if along_x else (x0, at, x1, at + w)
+        plan.add(PlanRoom([rect], r.label, function=r.function, role="living"))
+        at += w
 
 
 def _widths(rooms: list[ProgramRoom], length: int, depth: int) -> list[int]:
@@ -670,8 +779,8 @@ class HouseGenerator:
     Examples:
         >>> import numpy as np
         >>> b = HouseGenerator(area_m2=120)(np.random.default_rng(2))
-        >>> round(b.area)
-        120
+        >>> abs(b.area - 120) < 1  # within a row of 0.1 m grid units
+        True
     """
 
     area_m2: float = DEFAULT_AREAS_M2["house"]

@@ -4,7 +4,7 @@ The night zone is one or more strips, each a hallway with bedrooms, bathrooms an
 both sides; the day zone is a column with the kitchen and the living or dining room, and an
 entrance (a short corridor) or a hall between it and the night zone, which every hallway
 starts from. Where that makes the house nearer square, it is laid out in two rows instead: the
-kitchen, the entrance and the night zone below, the living rooms and the hall across the row
+kitchen, the entrance and the night zone below, the hall and the living rooms across the row
 above (a night zone of one band beside the day zone makes a long, thin house). The program
 (how many rooms of each label) is drawn from the model's label shares for the requested area,
 sizes from its areas.
@@ -148,6 +148,10 @@ MIN_TUCKED_DEPTH = to_units(1.5)
 """Shallowest a small room tucked in next to the hallway is made (units)."""
 MIN_WRAP_DEPTH = to_units(1.2)
 """Least depth of the part of a room that wraps around behind a tucked-in small room (units)."""
+ROWS_BAND_MAX = to_units(5.0)
+"""Deepest a band of a two-row house's night zone is made for its largest room (units)."""
+MAX_UPPER_ELONGATION = 3.0
+"""Longest a room of a two-row house's upper row is made, in multiples of its depth or width."""
 
 # The day zone: kitchen and living rooms (column A), hall or entrance (column B).
 
@@ -330,8 +334,7 @@ def _strips(rng: np.random.Generator, prog: Program, corridor: int, area_m2: flo
 
     def miss(n: int) -> float:
         depth = n * strip
-        length = area_to_units(area_m2) / depth
-        return abs(abs(math.log(length / depth)) - math.log(target))
+        return abs(_elongation(area_to_units(area_m2) / depth, depth) - math.log(target))
 
     most = len(prog.night) // MIN_STRIP_ROOMS if prog.hall else min(len(prog.night) // MIN_STRIP_ROOMS, 2)
     n_strips = min(range(1, max(most, 1) + 1), key=miss)
@@ -376,18 +379,16 @@ def _hallway_width(model: BuildingTypeModel) -> int:
 
 def _least_night_length(strips: list[Strip]) -> int:
     """Length of the longest band with every room at its narrowest (units)."""
-    return max(
-        sum(MIN_WIDTH if r.label is S else MIN_ORDINARY_WIDTH for r in rooms)
-        for strip in strips
-        for rooms in (strip.front, strip.back)
-    )
+    return max(sum(_least_width(r) for r in rooms) for strip in strips for rooms in (strip.front, strip.back))
 
 
 def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeModel) -> Plan:
     """The house's rooms and hallways, without doors.
 
     The strips are drawn again, with a night room fewer or a smaller day zone, until the day zone
-    fits beside the night zone's least length.
+    fits beside the night zone's least length. The entrance reaches the first hallway, with the
+    living rooms over it, in a house of one strip, and spans the depth, reaching every hallway,
+    in a house of several.
     """
     prog = _program(rng, area_m2, model)
     corridor = _hallway_width(model)
@@ -395,18 +396,19 @@ def _house_plan(rng: np.random.Generator, area_m2: float, model: BuildingTypeMod
     while True:
         strips = _strips(rng, prog, corridor, area_m2)
         depth = sum(f + corridor + b for f, b, _, _ in strips)
-        x_day = sum(_day_columns(prog, depth, entry_w, strips[0].front_depth + corridor))
+        entry_depth = strips[0].front_depth + corridor if len(strips) == 1 else depth
+        x_day = sum(_day_columns(prog, depth, entry_w, entry_depth))
         least = _least_night_length(strips)
         spare = area_to_units(area_m2) / depth - least
         if x_day <= spare or not (_drop_night_room(prog) or _shrink_day_zone(prog, spare / x_day)):
             break
     plan = Plan()
     night_len = max(round(area_to_units(area_m2) / depth) - x_day, least, MIN_NIGHT_LENGTH)
-    rows = _rows(prog, strips, depth, entry_w, area_m2)
+    rows = _rows(prog, strips, corridor, entry_w, area_m2)
     if rows is not None and _elongation(*rows.size) < _elongation(x_day + night_len, depth):
-        hallways = _rows_zones(plan, prog, strips, corridor, entry_w, rows)
+        hallways = _rows_zones(plan, corridor, entry_w, rows)
     else:
-        _day_zone(plan, rng, prog, strips[0].front_depth + corridor, depth, entry_w)
+        _day_zone(plan, rng, prog, entry_depth, depth, entry_w)
         hallways = _night_zone(plan, strips, corridor, x_day, night_len)
     fronts = corridor_fronts(plan, hallways)
     segments = segment_corridors(hallways, prog.hallways, rng, 2 * corridor, [], fronts, DOOR_NEED)
@@ -424,6 +426,9 @@ class Rows(NamedTuple):
         top: Depth of the upper row (units).
         width: The house's width (units).
         depth: Depth of the lower row, the night zone's (units).
+        strip: The night zone's strip.
+        upper: The upper row's rooms.
+        rects: Their rectangles, in the upper row's frame (units).
     """
 
     kitchen: int
@@ -431,6 +436,9 @@ class Rows(NamedTuple):
     top: int
     width: int
     depth: int
+    strip: Strip
+    upper: list[ProgramRoom]
+    rects: list[Rect]
 
     @property
     def size(self) -> tuple[int, int]:
@@ -443,71 +451,121 @@ def _elongation(width: float, depth: float) -> float:
     return abs(math.log(width / depth))
 
 
-def _natural_night_length(strips: list[Strip]) -> int:
-    """Length of the longest band with every room as wide as its area needs, or its least width (units)."""
+def _least_width(room: ProgramRoom) -> int:
+    """Narrowest a room along a hallway is made: a small room's door, an ordinary room's use (units)."""
+    return MIN_WIDTH if room.label is S else MIN_ORDINARY_WIDTH
+
+
+def _natural_night_length(strip: Strip) -> int:
+    """Length of the strip's longer band, each room as wide as its area needs, or its least width (units)."""
     return max(
-        sum(
-            max(round(area_to_units(r.area_m2) / depth), MIN_WIDTH if r.label is S else MIN_ORDINARY_WIDTH)
-            for r in rooms
-        )
-        for strip in strips
+        sum(max(round(area_to_units(r.area_m2) / depth), _least_width(r)) for r in rooms)
         for rooms, depth in ((strip.front, strip.front_depth), (strip.back, strip.back_depth))
         if rooms
     )
 
 
-def _rows(prog: Program, strips: list[Strip], depth: int, entry_w: int, area_m2: float) -> Rows | None:
-    """Sizes of the two-row layout, or ``None`` where its upper row would be too shallow.
+def _upper_rects(rooms: list[ProgramRoom], width: int, top: int, first: int) -> list[Rect]:
+    """The upper row's rooms: the first across its depth, the others beside it (units, row's frame).
 
-    A night zone of a single band is shallow: beside the day zone it makes a long, thin house. In
-    two rows, the entrance and the night zone (at its natural length) share the lower row, as
-    deep as the night zone, with the kitchen beside them; the living rooms and the hall take the
-    row above, across the whole width. Where that leaves the upper row too shallow, the kitchen
-    moves up into it.
+    Widths follow the rooms' areas, the first made at least ``first`` wide (it reaches over the
+    entrance, which it opens from) where the others keep :data:`MIN_DAY_ROOM`; the others share
+    the rest of the row side by side along its longer side, so a deep row stacks them.
+    """
+    areas = [r.area_m2 for r in rooms]
+    w0 = _split(width, areas, MIN_DAY_ROOM)[0] if len(rooms) > 1 else width
+    if w0 < first and width - first >= MIN_DAY_ROOM * (len(rooms) - 1):
+        w0 = first
+    rects = [(0, 0, w0, top)]
+    along_x = width - w0 >= top
+    at = w0 if along_x else 0
+    for w in _split(width - w0 if along_x else top, areas[1:], MIN_DAY_ROOM) if len(rooms) > 1 else []:
+        rects.append((at, 0, at + w, top) if along_x else (w0, at, width, at + w))
+        at += w
+    return rects
+
+
+def _fair_day_room(rect: Rect) -> bool:
+    """Whether a day room is at least :data:`MIN_DAY_ROOM` across and at most :data:`MAX_UPPER_ELONGATION` long."""
+    x0, y0, x1, y1 = rect
+    short, long = sorted((x1 - x0, y1 - y0))
+    return short >= MIN_DAY_ROOM and long <= MAX_UPPER_ELONGATION * short
+
+
+def _deepened(strip: Strip) -> Strip:
+    """The strip with each band as deep as its largest ordinary room is wide, within :data:`ROWS_BAND_M`.
+
+    In two rows nothing beside the night zone sets its depth, and a deeper band keeps a large
+    bedroom from stretching along the hallway.
+    """
+
+    def depth(rooms: list[ProgramRoom], now: int) -> int:
+        ordinary = [r.area_m2 for r in rooms if r.label is not S]
+        if not ordinary:
+            return now
+        return min(max(round(math.sqrt(area_to_units(max(ordinary)))), now), max(now, ROWS_BAND_MAX))
+
+    return strip._replace(
+        front_depth=depth(strip.front, strip.front_depth), back_depth=depth(strip.back, strip.back_depth)
+    )
+
+
+def _rows(prog: Program, strips: list[Strip], corridor: int, entry_w: int, area_m2: float) -> Rows | None:
+    """Sizes of the two-row layout, or ``None`` where it does not suit the house.
+
+    A night zone of one strip is shallow (about 5 m with rooms on one side of its hallway): beside
+    the day zone it makes a long, thin house. In two rows, the entrance and the night zone (its
+    bands deepened, see :func:`_deepened`, and at its natural length) share the lower row, as
+    deep as the night zone, with the kitchen beside them; the hall (first, over the kitchen and
+    the entrance) and the living rooms take the row above, across the whole width. Where the
+    upper row would be too shallow, or its rooms more than :data:`MAX_UPPER_ELONGATION` times as
+    long as deep, the kitchen moves up into it, at its far end; where even then they would be,
+    the house keeps its columns (``None``).
 
     Args:
         prog: The program.
-        strips: The night zone's strips.
-        depth: Depth of the night zone (units).
+        strips: The night zone's strips (one, else ``None``).
+        corridor: Width of the hallway (units).
         entry_w: Width of the entrance (units).
         area_m2: The house's floor area (m2).
     """
-    night = max(_natural_night_length(strips), MIN_NIGHT_LENGTH)
+    if len(strips) > 1:
+        return None
+    strip = strips[0] if strips[0].back else _deepened(strips[0])
+    depth = strip.front_depth + corridor + strip.back_depth
+    night = max(_natural_night_length(strip), MIN_NIGHT_LENGTH)
     least_top = MIN_HALL_WIDTH if prog.hall else MIN_DAY_ROOM
+    hall = [ProgramRoom(H, "hall", prog.hall)] if prog.hall else []
     for kitchen in (max(round(area_to_units(prog.kitchen) / depth), MIN_DAY_ROOM), 0):
+        upper = [*hall, *prog.living] + ([] if kitchen else [ProgramRoom(M, "kitchen", prog.kitchen)])
         width = kitchen + entry_w + night
         top = round((area_to_units(area_m2) - width * depth) / width)
-        if top >= least_top:
-            return Rows(kitchen, night, top, width, depth)
+        if top < least_top:
+            continue
+        rects = _upper_rects(upper, width, top, kitchen + entry_w)
+        if all(_fair_day_room(r) for r in rects):
+            return Rows(kitchen, night, top, width, depth, strip, upper, rects)
     return None
 
 
-def _rows_zones(
-    plan: Plan, prog: Program, strips: list[Strip], corridor: int, entry_w: int, rows: Rows
-) -> list[Rect]:
+def _rows_zones(plan: Plan, corridor: int, entry_w: int, rows: Rows) -> list[Rect]:
     """Lay out a house in two rows (see :func:`_rows`); returns the night zone's hallways.
 
-    The lower row holds the kitchen (unless it is in the upper row), the entrance and the night
-    zone, whose hallways start from the entrance. The upper row holds, side by side in
-    proportion to their areas, the living rooms and the hall, the hall above the entrance and
-    the night zone; or, with the kitchen in it, the hall above the entrance, then the living
-    rooms, then the kitchen.
+    Args:
+        plan: The plan the rooms are added to.
+        corridor: Width of the hallway (units).
+        entry_w: Width of the entrance (units).
+        rows: The layout's sizes and the upper row's rooms.
     """
     depth = rows.depth
-    hall = [ProgramRoom(H, "hall", prog.hall)] if prog.hall else []
     if rows.kitchen:
         plan.add(PlanRoom([(0, 0, rows.kitchen, depth)], M, function="kitchen", role="kitchen"))
-        upper = [*prog.living, *hall]
-    else:
-        upper = [*hall, *prog.living, ProgramRoom(M, "kitchen", prog.kitchen)]
     x = rows.kitchen
     plan.add(PlanRoom([(x, 0, x + entry_w, depth)], C, function="entrance", role="lobby"))
-    hallways = _night_zone(plan, strips, corridor, x + entry_w, rows.night)
-    x = 0
-    for r, w in zip(upper, _split(rows.width, [r.area_m2 for r in upper], MIN_DAY_ROOM), strict=True):
-        role = "hall" if r.label is H else "kitchen" if r.function == "kitchen" else "living"
-        plan.add(PlanRoom([(x, depth, x + w, depth + rows.top)], r.label, function=r.function, role=role))
-        x += w
+    hallways = _night_zone(plan, [rows.strip], corridor, x + entry_w, rows.night)
+    for r, (x0, y0, x1, y1) in zip(rows.upper, rows.rects, strict=True):
+        role = "hall" if r.label is H else "kitchen" if r.function == KITCHEN.function else "living"
+        plan.add(PlanRoom([(x0, depth + y0, x1, depth + y1)], r.label, function=r.function, role=role))
     return hallways
 
 
@@ -587,7 +645,9 @@ def _day_zone(
 
     Column A holds the kitchen with the living rooms above it (side by side in a shallow house);
     column B, next to the night zone, the hall (entered through a vestibule) or the entrance, with
-    the living rooms reaching over the entrance where the house is deep enough.
+    the living rooms reaching over the entrance where the house is deep enough. A kitchen alone
+    in a column more than :data:`MAX_UPPER_ELONGATION` times as deep as wide takes the depth its
+    area needs, and the hall the rest of the column.
     """
     living = area_to_units(_total(prog.living))
     kitchen = area_to_units(prog.kitchen)
@@ -600,7 +660,12 @@ def _day_zone(
         top = entry_depth if over_b else depth
         plan.add(PlanRoom([(col_a, 0, col_a + col_b, top)], C, function="entrance", role="lobby"))
     if not living:
-        plan.add(PlanRoom([(0, 0, col_a, depth)], M, function="kitchen", role="kitchen"))
+        yk = max(round(kitchen / col_a), room)
+        if prog.hall and depth > MAX_UPPER_ELONGATION * col_a and depth - yk >= room:
+            plan.add(PlanRoom([(0, 0, col_a, yk)], M, function="kitchen", role="kitchen"))
+            next(r for r in plan.rooms if r.role == "hall").rects.append((0, yk, col_a, depth))
+        else:
+            plan.add(PlanRoom([(0, 0, col_a, depth)], M, function="kitchen", role="kitchen"))
         return col_a + col_b
     if depth < 2 * room:
         xk = (
@@ -731,14 +796,21 @@ def _doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel) -> No
 
 
 def _day_doors(plan: Plan, rng: np.random.Generator, model: BuildingTypeModel, centre: int) -> None:
-    """Doors of the day zone: living rooms to the hall or entrance (``centre``) and the kitchen, garden doors."""
+    """Doors of the day zone: living rooms to the hall or entrance (``centre``) and the kitchen, garden doors.
+
+    The kitchen opens onto the centre where it joins no living room, or where a living room does
+    not open onto the centre, else by chance. A living room that touches neither opens into a
+    neighbouring living room.
+    """
     kitchen = next(i for i, r in enumerate(plan.rooms) if r.role == "kitchen")
     living = [i for i, r in enumerate(plan.rooms) if r.role == "living"]
     gateways = sum(_door(plan, rng, i, centre) for i in living)
-    for i in living:
-        _door(plan, rng, kitchen, i)
-    if not gateways or len(living) > gateways or rng.random() < P_KITCHEN_TO_CENTRE:
+    joined = [_door(plan, rng, kitchen, i) for i in living]
+    if not any(joined) or len(living) > gateways or rng.random() < P_KITCHEN_TO_CENTRE:
         _door(plan, rng, kitchen, centre)
+    for i in living:
+        if not any(i in (d.a, d.b) for d in plan.doors):
+            any(_door(plan, rng, i, j) for j in living if j != i)
     p_garden = min(1.0, model.connection(B, OUTSIDE) * model.stats(B).doors_mean)
     for i in living:
         walls = [w for w in exterior_walls(plan, i) if door_fits(w, RULES.room)]

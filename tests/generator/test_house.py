@@ -3,17 +3,9 @@
 import numpy as np
 import pytest
 
-from realistic_indoor.building import SemanticLabel
 from realistic_indoor.generator import house, make_generator
+from realistic_indoor.generator.plan import B, C, H, M, S
 from realistic_indoor.validator.building_measures import building_measures
-
-C, H, S, M, B = (
-    SemanticLabel.CORRIDOR,
-    SemanticLabel.HALL,
-    SemanticLabel.SMALL,
-    SemanticLabel.MEDIUM,
-    SemanticLabel.BIG,
-)
 
 
 def _others(b, rid):

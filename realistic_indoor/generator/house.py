@@ -150,8 +150,8 @@ MIN_WRAP_DEPTH = to_units(1.2)
 """Least depth of the part of a room that wraps around behind a tucked-in small room (units)."""
 ROWS_BAND_MAX = to_units(5.0)
 """Deepest a band of a two-row house's night zone is made for its largest room (units)."""
-MAX_UPPER_ELONGATION = 3.0
-"""Longest a room of a two-row house's upper row is made, in multiples of its depth or width."""
+MAX_DAY_ELONGATION = 3.0
+"""Longest a day room is made where the layout can choose, in multiples of its width."""
 
 # The day zone: kitchen and living rooms (column A), hall or entrance (column B).
 
@@ -486,14 +486,14 @@ def _upper_rects(rooms: list[ProgramRoom], width: int, top: int, first: int) -> 
 
 
 def _fair_day_room(rect: Rect) -> bool:
-    """Whether a day room is at least :data:`MIN_DAY_ROOM` across and at most :data:`MAX_UPPER_ELONGATION` long."""
+    """Whether a day room is at least :data:`MIN_DAY_ROOM` across and at most :data:`MAX_DAY_ELONGATION` long."""
     x0, y0, x1, y1 = rect
     short, long = sorted((x1 - x0, y1 - y0))
-    return short >= MIN_DAY_ROOM and long <= MAX_UPPER_ELONGATION * short
+    return short >= MIN_DAY_ROOM and long <= MAX_DAY_ELONGATION * short
 
 
 def _deepened(strip: Strip) -> Strip:
-    """The strip with each band as deep as its largest ordinary room is wide, within :data:`ROWS_BAND_M`.
+    """The strip with each band as deep as its largest ordinary room is wide, within :data:`ROWS_BAND_MAX`.
 
     In two rows nothing beside the night zone sets its depth, and a deeper band keeps a large
     bedroom from stretching along the hallway.
@@ -518,9 +518,10 @@ def _rows(prog: Program, strips: list[Strip], corridor: int, entry_w: int, area_
     bands deepened, see :func:`_deepened`, and at its natural length) share the lower row, as
     deep as the night zone, with the kitchen beside them; the hall (first, over the kitchen and
     the entrance) and the living rooms take the row above, across the whole width. Where the
-    upper row would be too shallow, or its rooms more than :data:`MAX_UPPER_ELONGATION` times as
+    upper row would be too shallow, or its rooms more than :data:`MAX_DAY_ELONGATION` times as
     long as deep, the kitchen moves up into it, at its far end; where even then they would be,
-    the house keeps its columns (``None``).
+    the house keeps its columns (``None``). The first upper room must reach over the whole
+    entrance, and a hall be at least :data:`MIN_HALL_WIDTH` across.
 
     Args:
         prog: The program.
@@ -543,7 +544,8 @@ def _rows(prog: Program, strips: list[Strip], corridor: int, entry_w: int, area_
         if top < least_top:
             continue
         rects = _upper_rects(upper, width, top, kitchen + entry_w)
-        if all(_fair_day_room(r) for r in rects):
+        hall_ok = not hall or min(rects[0][2] - rects[0][0], rects[0][3] - rects[0][1]) >= MIN_HALL_WIDTH
+        if rects[0][2] >= kitchen + entry_w and hall_ok and all(_fair_day_room(r) for r in rects):
             return Rows(kitchen, night, top, width, depth, strip, upper, rects)
     return None
 
@@ -622,7 +624,9 @@ def _day_columns(prog: Program, depth: int, entry_w: int, entry_depth: int) -> t
     """Widths of the day zone's two columns (kitchen and living rooms; hall or entrance).
 
     Where the living rooms reach over the entrance, the kitchen is as deep as the entrance and
-    column A as wide as the kitchen or the living rooms need, whichever needs more.
+    column A as wide as the kitchen or the living rooms need, whichever needs more. A column A
+    more than :data:`MAX_DAY_ELONGATION` times as deep as wide is widened to the side of its
+    largest room, whose rooms lie one above the other.
     """
     living = area_to_units(_total(prog.living))
     col_b = max(round(area_to_units(prog.hall) / depth), MIN_HALL_WIDTH) if prog.hall else entry_w
@@ -630,7 +634,11 @@ def _day_columns(prog: Program, depth: int, entry_w: int, entry_depth: int) -> t
         col_a = max(area_to_units(prog.kitchen) / entry_depth, living / (depth - entry_depth) - col_b)
     else:
         col_a = (area_to_units(prog.kitchen) + living) / depth
-    return max(round(col_a), MIN_DAY_ROOM), col_b
+    col_a = max(round(col_a), MIN_DAY_ROOM)
+    if prog.living and depth > MAX_DAY_ELONGATION * col_a:
+        largest = max(prog.kitchen, *(r.area_m2 for r in prog.living))
+        col_a = max(col_a, round(math.sqrt(area_to_units(largest))))
+    return col_a, col_b
 
 
 def _over_entry(prog: Program, depth: int, entry_depth: int) -> bool:
@@ -646,7 +654,7 @@ def _day_zone(
     Column A holds the kitchen with the living rooms above it (side by side in a shallow house);
     column B, next to the night zone, the hall (entered through a vestibule) or the entrance, with
     the living rooms reaching over the entrance where the house is deep enough. A kitchen alone
-    in a column more than :data:`MAX_UPPER_ELONGATION` times as deep as wide takes the depth its
+    in a column more than :data:`MAX_DAY_ELONGATION` times as deep as wide takes the depth its
     area needs, and the hall the rest of the column.
     """
     living = area_to_units(_total(prog.living))
@@ -661,7 +669,7 @@ def _day_zone(
         plan.add(PlanRoom([(col_a, 0, col_a + col_b, top)], C, function="entrance", role="lobby"))
     if not living:
         yk = max(round(kitchen / col_a), room)
-        if prog.hall and depth > MAX_UPPER_ELONGATION * col_a and depth - yk >= room:
+        if prog.hall and depth > MAX_DAY_ELONGATION * col_a and depth - yk >= room:
             plan.add(PlanRoom([(0, 0, col_a, yk)], M, function="kitchen", role="kitchen"))
             next(r for r in plan.rooms if r.role == "hall").rects.append((0, yk, col_a, depth))
         else:
@@ -724,11 +732,19 @@ def _widths(rooms: list[ProgramRoom], length: int, depth: int) -> list[int]:
 
 
 def _hall_with_vestibule(plan: Plan, rng: np.random.Generator, box: Rect) -> None:
-    """A hall entered through a vestibule (a short corridor) set into its front side."""
+    """A hall entered through a vestibule (a short corridor) set into its front side.
+
+    The hall beside the vestibule is either :data:`MIN_HALL_BESIDE_VESTIBULE` wide or more, or
+    absent (the vestibule in a corner).
+    """
     x0, y0, x1, y1 = box
     w = min(to_units(rng.uniform(*VESTIBULE_WIDTH_M)), x1 - x0 - MIN_HALL_BESIDE_VESTIBULE)
     d = to_units(rng.uniform(*VESTIBULE_DEPTH_M))
     a = x0 + int(rng.integers(0, x1 - x0 - w + 1))
+    if 0 < a - x0 < MIN_HALL_BESIDE_VESTIBULE:
+        a = x0
+    elif 0 < x1 - a - w < MIN_HALL_BESIDE_VESTIBULE:
+        a = x1 - w
     plan.add(PlanRoom([(a, y0, a + w, y0 + d)], C, function="entrance", role="lobby"))
     rects = [(x0, y0 + d, x1, y1), (x0, y0, a, y0 + d), (a + w, y0, x1, y0 + d)]
     plan.add(PlanRoom([r for r in rects if r[0] < r[2]], H, function="hall", role="hall"))

@@ -28,12 +28,18 @@ Usage::
 
     .venv/bin/python benchmarks/bench_envs.py           # about three minutes
     .venv/bin/python benchmarks/bench_envs.py --quick   # about a minute
+    .venv/bin/python benchmarks/bench_envs.py --skip-growth --ids OfficeExplore-v0 \
+        --env-kwargs '{"lidar": {"n_beams": 37}, "world": {"resolution_m": 0.1}}'   # another definition
+
+``--env-kwargs`` gives every environment made here (both tables of ids, the reset split, the
+vector env) the same config changes, as ``gym.make(id, **kwargs)`` takes them.
 """
 
 from __future__ import annotations
 
 import argparse
 import gc
+import json
 import os
 import platform
 import statistics
@@ -46,9 +52,10 @@ import numpy as np
 from bench_sim import PLAN_FILES, PLANS  # the simulator benchmark's plans, spanning sizes
 
 import realistic_indoor.envs  # noqa: F401  (registers the ids)
-from realistic_indoor.envs import PRESETS
+from realistic_indoor.envs import PRESETS, preset_config
 from realistic_indoor.envs.simulation import Simulation
 from realistic_indoor.envs.vector import step_threads
+from realistic_indoor.errors import ConfigError
 
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
 YARDSTICK = "CartPole-v1"
@@ -65,6 +72,8 @@ def main(argv: list[str] | None = None) -> None:
     args = _parse(argv)
     print(f"# Environment benchmark ({'quick' if args.quick else 'full'}; one process, one core)\n")
     print(f"Machine: {machine()}\n")
+    if args.env_kwargs:
+        print(f"Every environment made with the config changes {json.dumps(args.env_kwargs)}.\n")
     args.yardstick = step_rate(YARDSTICK, {}, args)[0]
     print(
         f"Yardstick: {YARDSTICK} (gym.make, random actions, the same loop) steps at "
@@ -74,10 +83,10 @@ def main(argv: list[str] | None = None) -> None:
         _table(
             "Registered environments, default config",
             "id",
-            [(env_id, env_id, {}) for env_id in args.ids],
+            [(env_id, env_id, dict(args.env_kwargs)) for env_id in args.ids],
             args,
         )
-        rows = [(f"{a} m2", "OfficeExplore-v0", {"area_m2": float(a)}) for a in AREAS_M2]
+        rows = [(f"{a} m2", "OfficeExplore-v0", {**args.env_kwargs, "area_m2": float(a)}) for a in AREAS_M2]
         if not args.skip_growth:
             _table("Growth with area: OfficeExplore-v0, area_m2 asked of the generator", "area", rows, args)
         _reset_split_table("OfficeExplore-v0", args)
@@ -88,7 +97,7 @@ def main(argv: list[str] | None = None) -> None:
         rows = []
         for name in PLAN_FILES:
             building = load(args.plans_dir / name)
-            rows.append((Path(name).stem, "OfficeExplore-v0", {"building": building}))
+            rows.append((Path(name).stem, "OfficeExplore-v0", {**args.env_kwargs, "building": building}))
         _table("Growth with area: OfficeExplore-v0 on fixed real plans", "plan", rows, args)
 
 
@@ -102,10 +111,32 @@ def _parse(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument("--quick", action="store_true", help="fewer steps and resets")
     p.add_argument("--skip-growth", action="store_true", help="leave out the growth-with-area table")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument(
+        "--env-kwargs",
+        type=_json_object,
+        default={},
+        metavar="JSON",
+        help='config changes for every environment, e.g. \'{"lidar": {"n_beams": 37}}\'',
+    )
     args = p.parse_args(argv)
+    try:
+        preset_config("OfficeExplore-v0", **args.env_kwargs)
+    except ConfigError as e:
+        p.error(f"--env-kwargs: {e}")
     args.steps = 5_000 if args.quick else 20_000
     args.resets = 5 if args.quick else 20
     return args
+
+
+def _json_object(text: str) -> dict:
+    """``text`` parsed as a JSON object (argparse reports the error otherwise)."""
+    try:
+        value = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise argparse.ArgumentTypeError(f"not JSON ({e.msg}): {text!r}") from None
+    if not isinstance(value, dict):
+        raise argparse.ArgumentTypeError(f"not a JSON object of config changes: {text!r}")
+    return value
 
 
 def machine() -> str:
@@ -146,7 +177,7 @@ def _table(title: str, key: str, rows: list[tuple[str, str, dict]], args: argpar
 
 def _reset_split_table(env_id: str, args: argparse.Namespace) -> None:
     """Median time to generate a new building and to build its world, side by side (ms)."""
-    env = gym.make(env_id)
+    env = gym.make(env_id, **args.env_kwargs)
     config = env.unwrapped.config
     env.close()
     generate = config.source.generator()
@@ -183,7 +214,7 @@ def _vector_table(env_id: str, args: argparse.Namespace) -> None:
     print(f"| N | threads | robot-steps/s | x {YARDSTICK} | MB per sub-env |")
     print("|---:|---:|---:|---:|---:|")
     for n in (1, 8) if args.quick else (1, 8, 64):
-        envs = gym.make_vec(env_id, num_envs=n)
+        envs = gym.make_vec(env_id, num_envs=n, **args.env_kwargs)
         envs.reset(seed=args.seed)
         actions = np.random.default_rng(args.seed).uniform(-1, 1, (100, n, 2)).astype(np.float32)
         for a in actions:

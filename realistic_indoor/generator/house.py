@@ -150,6 +150,11 @@ MIN_WRAP_DEPTH = to_units(1.2)
 """Least depth of the part of a room that wraps around behind a tucked-in small room (units)."""
 ROWS_BAND_MAX = to_units(5.0)
 """Deepest a band of a two-row house's night zone is made for its largest room (units)."""
+MIN_NIGHT_SQUEEZE = 0.7
+"""Least share of its natural length a two-row house's night zone is squeezed to, so that the
+row above it keeps its rooms in proportion."""
+ROWS_SQUEEZE_STEPS = 6
+"""Night-zone lengths tried between the natural length and the most squeezed one."""
 MAX_DAY_ELONGATION = 3.0
 """Longest a day room is made where the layout can choose, in multiples of its width."""
 
@@ -278,13 +283,18 @@ def _add_room(
 ) -> float:
     """Add a room with the label furthest behind the rooms ``wanted`` of it; returns its area (m2).
 
-    ``counts`` (rooms of each label so far) is updated.
+    ``counts`` (rooms of each label so far) is updated. Its function is drawn again where it came
+    out a kitchen: the program's kitchen is the only one.
     """
     label = max((S, M, B), key=lambda lab: wanted[lab] - counts[lab] + LABEL_JITTER * rng.random())
     label = M if counts[M] < MIN_MEDIUM_ROOMS else label
     a = ROOM_AREA.draw(rng, model.stats(label))
     avoid = DAY_FUNCTIONS if label is not B or counts[B] else (KITCHEN.function,)
-    function = draw_function(rng, model.function_weights(label), avoid=avoid)
+    weights = model.function_weights(label)
+    function = draw_function(rng, weights, avoid=avoid)
+    others = {k: v for k, v in weights.items() if k != KITCHEN.function}
+    if function == KITCHEN.function and others:  # the house has its kitchen
+        function = draw_function(rng, others, avoid=avoid)
     if label is M and not any(r.function == "bedroom" for r in prog.night):
         function = "bedroom"
     (prog.living if function in LIVING_FUNCTIONS else prog.night).append(ProgramRoom(label, function, a))
@@ -514,14 +524,16 @@ def _rows(prog: Program, strips: list[Strip], corridor: int, entry_w: int, area_
     """Sizes of the two-row layout, or ``None`` where it does not suit the house.
 
     A night zone of one strip is shallow (about 5 m with rooms on one side of its hallway): beside
-    the day zone it makes a long, thin house. In two rows, the entrance and the night zone (its
-    bands deepened, see :func:`_deepened`, and at its natural length) share the lower row, as
+    the day zone it makes a long, thin house. In two rows, the entrance and the night zone (a
+    single band deepened, see :func:`_deepened`, at its natural length) share the lower row, as
     deep as the night zone, with the kitchen beside them; the hall (first, over the kitchen and
     the entrance) and the living rooms take the row above, across the whole width. Where the
-    upper row would be too shallow, or its rooms more than :data:`MAX_DAY_ELONGATION` times as
-    long as deep, the kitchen moves up into it, at its far end; where even then they would be,
-    the house keeps its columns (``None``). The first upper room must reach over the whole
-    entrance, and a hall be at least :data:`MIN_HALL_WIDTH` across.
+    upper rooms would not suit (:func:`_upper_fits`: too shallow, more than
+    :data:`MAX_DAY_ELONGATION` times as long as deep, short of the entrance), the kitchen moves
+    up into the row, at its far end; where even then they would not, the night zone is
+    squeezed, step by step, down to :data:`MIN_NIGHT_SQUEEZE` of its natural length (its rooms
+    narrower, as in the columns), with the kitchen below, then above; where nothing suits, the
+    house keeps its columns (``None``).
 
     Args:
         prog: The program.
@@ -534,20 +546,36 @@ def _rows(prog: Program, strips: list[Strip], corridor: int, entry_w: int, area_
         return None
     strip = strips[0] if strips[0].back else _deepened(strips[0])
     depth = strip.front_depth + corridor + strip.back_depth
-    night = max(_natural_night_length(strip), MIN_NIGHT_LENGTH)
+    natural = max(_natural_night_length(strip), MIN_NIGHT_LENGTH)
+    least = max(_least_night_length([strip]), MIN_NIGHT_LENGTH, round(MIN_NIGHT_SQUEEZE * natural))
+    squeezed = sorted(
+        {natural - (natural - least) * k // ROWS_SQUEEZE_STEPS for k in range(1, ROWS_SQUEEZE_STEPS + 1)}
+    )
     least_top = MIN_HALL_WIDTH if prog.hall else MIN_DAY_ROOM
     hall = [ProgramRoom(H, "hall", prog.hall)] if prog.hall else []
-    for kitchen in (max(round(area_to_units(prog.kitchen) / depth), MIN_DAY_ROOM), 0):
-        upper = [*hall, *prog.living] + ([] if kitchen else [ProgramRoom(M, "kitchen", prog.kitchen)])
-        width = kitchen + entry_w + night
-        top = round((area_to_units(area_m2) - width * depth) / width)
-        if top < least_top:
-            continue
-        rects = _upper_rects(upper, width, top, kitchen + entry_w)
-        hall_ok = not hall or min(rects[0][2] - rects[0][0], rects[0][3] - rects[0][1]) >= MIN_HALL_WIDTH
-        if rects[0][2] >= kitchen + entry_w and hall_ok and all(_fair_day_room(r) for r in rects):
-            return Rows(kitchen, night, top, width, depth, strip, upper, rects)
+    for nights in ([natural], squeezed[::-1] if least < natural else []):
+        for kitchen in (max(round(area_to_units(prog.kitchen) / depth), MIN_DAY_ROOM), 0):
+            upper = [*hall, *prog.living] + ([] if kitchen else [ProgramRoom(M, "kitchen", prog.kitchen)])
+            for night in nights:
+                width = kitchen + entry_w + night
+                top = round((area_to_units(area_m2) - width * depth) / width)
+                if top < least_top:
+                    continue
+                rects = _upper_rects(upper, width, top, kitchen + entry_w)
+                if _upper_fits(rects, kitchen + entry_w, bool(hall)):
+                    return Rows(kitchen, night, top, width, depth, strip, upper, rects)
     return None
+
+
+def _upper_fits(rects: list[Rect], entrance_end: int, has_hall: bool) -> bool:
+    """Whether the upper row's rooms suit the house.
+
+    The first must reach over the entrance (to ``entrance_end``, units), a hall be at least
+    :data:`MIN_HALL_WIDTH` across, and every room fair (:func:`_fair_day_room`).
+    """
+    x0, y0, x1, y1 = rects[0]
+    hall_ok = not has_hall or min(x1 - x0, y1 - y0) >= MIN_HALL_WIDTH
+    return x1 >= entrance_end and hall_ok and all(_fair_day_room(r) for r in rects)
 
 
 def _rows_zones(plan: Plan, corridor: int, entry_w: int, rows: Rows) -> list[Rect]:

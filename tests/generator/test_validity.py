@@ -119,14 +119,15 @@ def test_entrances__in_a_hall_or_at_a_corridor(kind, samples):
         assert any(b.room(d.room_a).label.value in ("hall", "corridor") for d in b.entrances)
 
 
-@pytest.mark.parametrize("kind", REALISTIC)
-def test_footprint__long_narrow_and_compact_buildings_both_occur(kind, samples):
+@pytest.mark.parametrize(("kind", "long"), [("office", 2.2), ("school", 2.2), ("house", 1.6)])
+def test_footprint__long_narrow_and_compact_buildings_both_occur(kind, long, samples):
+    # houses are compact (rarely more than twice as long as wide), yet not all square
     aspect = []
     for b in samples(kind)[:100]:
         x0, y0, x1, y1 = b.bounds
         aspect.append(max(x1 - x0, y1 - y0) / min(x1 - x0, y1 - y0))
     assert min(aspect) < 1.4
-    assert max(aspect) > 2.2
+    assert max(aspect) > long
 
 
 def _is_suite(b, maze):

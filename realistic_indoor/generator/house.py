@@ -292,9 +292,8 @@ def _add_room(
     avoid = DAY_FUNCTIONS if label is not B or counts[B] else (KITCHEN.function,)
     weights = model.function_weights(label)
     function = draw_function(rng, weights, avoid=avoid)
-    others = {k: v for k, v in weights.items() if k != KITCHEN.function}
-    if function == KITCHEN.function and others:  # the house has its kitchen
-        function = draw_function(rng, others, avoid=avoid)
+    if function == KITCHEN.function and len(weights) > 1:  # the house has its kitchen
+        function = draw_function(rng, {k: v for k, v in weights.items() if k != function}, avoid=avoid)
     if label is M and not any(r.function == "bedroom" for r in prog.night):
         function = "bedroom"
     (prog.living if function in LIVING_FUNCTIONS else prog.night).append(ProgramRoom(label, function, a))
@@ -482,17 +481,13 @@ def _upper_rects(rooms: list[ProgramRoom], width: int, top: int, first: int) -> 
     entrance, which it opens from) where the others keep :data:`MIN_DAY_ROOM`; the others share
     the rest of the row side by side along its longer side, so a deep row stacks them.
     """
+    if len(rooms) == 1:
+        return [(0, 0, width, top)]
     areas = [r.area_m2 for r in rooms]
-    w0 = _split(width, areas, MIN_DAY_ROOM)[0] if len(rooms) > 1 else width
+    w0 = _split(width, areas, MIN_DAY_ROOM)[0]
     if w0 < first and width - first >= MIN_DAY_ROOM * (len(rooms) - 1):
         w0 = first
-    rects = [(0, 0, w0, top)]
-    along_x = width - w0 >= top
-    at = w0 if along_x else 0
-    for w in _split(width - w0 if along_x else top, areas[1:], MIN_DAY_ROOM) if len(rooms) > 1 else []:
-        rects.append((at, 0, at + w, top) if along_x else (w0, at, width, at + w))
-        at += w
-    return rects
+    return [(0, 0, w0, top), *_side_by_side((w0, 0, width, top), areas[1:], MIN_DAY_ROOM)]
 
 
 def _fair_day_room(rect: Rect) -> bool:
@@ -721,15 +716,23 @@ def _day_zone(
 
 def _living(plan: Plan, prog: Program, box: Rect) -> None:
     """The living rooms side by side along the longer side of ``box`` (units), in proportion to their areas."""
+    for r, rect in zip(prog.living, _side_by_side(box, [r.area_m2 for r in prog.living]), strict=True):
+        plan.add(PlanRoom([rect], r.label, function=r.function, role="living"))
+
+
+def _side_by_side(box: Rect, areas: list[float], least: int = 0) -> list[Rect]:
+    """Rectangles filling ``box`` (units) side by side along its longer side, in proportion to ``areas``.
+
+    None is narrower than ``least`` where the box is long enough for all (see :func:`_split`).
+    """
     x0, y0, x1, y1 = box
     along_x = x1 - x0 >= y1 - y0
     at = x0 if along_x else y0
-    for r, w in zip(
-        prog.living, _split(max(x1 - x0, y1 - y0), [r.area_m2 for r in prog.living]), strict=True
-    ):
-        rect = (at, y0, at + w, y1) if along_x else (x0, at, x1, at + w)
-        plan.add(PlanRoom([rect], r.label, function=r.function, role="living"))
+    rects = []
+    for w in _split(max(x1 - x0, y1 - y0), areas, least):
+        rects.append((at, y0, at + w, y1) if along_x else (x0, at, x1, at + w))
         at += w
+    return rects
 
 
 def _widths(rooms: list[ProgramRoom], length: int, depth: int) -> list[int]:

@@ -2,8 +2,9 @@
 
 Geometry is in cell units: cell ``(r, c)`` spans ``[c, c + 1) x [r, r + 1)``, centre at
 ``(c + 0.5, r + 0.5)``. The fan's cells are gathered as row spans ``(row, first col, end col)``
-and marked in one loop, each beam's cells as it is walked. The marking of a cell is written out
-in both loops: as a numba function of the arrays it made the map update four times slower.
+and marked in one loop, each beam's cells as it is walked; bits of 64 cells (:data:`WORD`) say
+which free cells are still unknown. The marking of a cell is written out in both loops: as a
+numba function of the arrays it made the map update four times slower.
 """
 
 from __future__ import annotations
@@ -19,10 +20,16 @@ MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
 """States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
 TRUTH_WALL, TRUTH_OUTSIDE, TRUTH_FREE, TRUTH_REACHABLE = 0, 1, 2, 3
 """What the ground truth lets a beam mark in a cell: free only if ``>= TRUTH_FREE``."""
-STRIP = 32
-"""Cells per row strip: ``todo[r, c // STRIP]`` counts the free cells of a strip still unknown,
-so a span walks past a fully observed strip, or the rest of one, in one step (most of a scan
-covers known floor)."""
+WORD = 64
+"""Cells per word of the to-do bits: bit ``j`` of ``todo[r, w]`` is set while cell
+``(r, WORD * w + j)`` is free in the ground truth and still unknown. A span tests a whole word
+of cells at once and visits only the cells it marks (most of a scan covers known floor), and a
+beam tests a bit of an array an eighth of the map's size."""
+_DE_BRUIJN = 0x03F79D71B4CB0A89
+"""A de Bruijn sequence of order 6: the top 6 bits of it times a power of two name the power."""
+_LOWEST_BIT = np.zeros(64, dtype=np.int64)
+for _j in range(64):
+    _LOWEST_BIT[((_DE_BRUIJN << _j) & 0xFFFFFFFFFFFFFFFF) >> 58] = _j
 _NUDGE = 1e-3
 """Distance (cells) past a beam's end at which the wall cell it hit is looked up."""
 
@@ -35,7 +42,9 @@ def integrate_scan(
 
     Free: the cells whose centre lies in the fan the beams swept (between each two neighbouring
     beams, up to the shorter of their ranges) plus the cells each beam crosses. Occupied: the
-    wall cell each returned beam ends in. Ranges are in metres, ``scale`` is cells per metre.
+    wall cell each returned beam ends in. Ranges are in metres, ``scale`` is cells per metre;
+    ``todo`` holds the map's to-do bits (:func:`todo_bits` of ``targets`` for an empty map),
+    which every cell marked free clears.
     """
     n = cos_off.shape[0]
     dxs = np.empty(n)
@@ -70,22 +79,31 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
         r = rows[i]
         c = c0[i]
         end = c1[i]
-        while c < end:  # strip by strip: a strip with nothing left to mark is jumped
-            s = c // STRIP
-            stop = min(end, (s + 1) * STRIP)
-            left = todo[r, s]
-            while left > 0 and c < stop:
-                if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
-                    grid[r, c] = MAPPED_FREE
-                    left -= 1
-                    if pooled[r // k, c // k] == MAPPED_UNKNOWN:
-                        pooled[r // k, c // k] = MAPPED_FREE
-                    if targets[r, c] == TRUTH_REACHABLE:
+        while c < end:  # word by word: only the cells still to mark are visited
+            word = c // WORD
+            stop = min(end, (word + 1) * WORD)
+            bits = todo[r, word] & _bit_range(c - word * WORD, stop - word * WORD)
+            if bits != 0:
+                todo[r, word] ^= bits
+                base = word * WORD
+                while bits != 0:
+                    low = bits & -bits
+                    cc = base + _LOWEST_BIT[((low * _DE_BRUIJN) >> 58) & 63]
+                    bits ^= low
+                    grid[r, cc] = MAPPED_FREE
+                    if pooled[r // k, cc // k] == MAPPED_UNKNOWN:
+                        pooled[r // k, cc // k] = MAPPED_FREE
+                    if targets[r, cc] == TRUTH_REACHABLE:
                         new += 1
-                c += 1
-            todo[r, s] = left
             c = stop
     return new
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _bit_range(lo, hi):  # pragma: no cover - compiled
+    """An int64 whose bits ``lo <= j < hi`` are set (``0 <= lo < hi <= WORD``)."""
+    upper = np.int64(-1) if hi == WORD else (np.int64(1) << hi) - 1
+    return upper & (np.int64(-1) << lo)
 
 
 @njit(cache=True, nogil=True)
@@ -107,14 +125,18 @@ def map_targets(grid, reachable):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
-def free_per_strip(targets):  # pragma: no cover - compiled
-    """Number of free cells (``targets >= TRUTH_FREE``) in each row strip of ``STRIP`` cells."""
+def todo_bits(targets):  # pragma: no cover - compiled
+    """The to-do bits of an empty map: a bit set for each free cell (``targets >= TRUTH_FREE``).
+
+    Returns:
+        ``(H, ceil(W / WORD))`` int64, bit ``j`` of word ``w`` for column ``WORD * w + j``.
+    """
     h, w = targets.shape
-    out = np.zeros((h, (w + STRIP - 1) // STRIP), dtype=np.int32)
+    out = np.zeros((h, (w + WORD - 1) // WORD), dtype=np.int64)
     for r in range(h):
         for c in range(w):
             if targets[r, c] >= TRUTH_FREE:
-                out[r, c // STRIP] += 1
+                out[r, c // WORD] |= np.int64(1) << (c % WORD)
     return out
 
 
@@ -245,9 +267,10 @@ def _walk_and_mark(grid, pooled, k, targets, todo, px, py, dx, dy, t0, t1, h, w)
     t_r = t0 + ((r + 1 - y) if dy > 0 else (y - r)) * t_dr if dy != 0.0 else 1e30
     new = 0
     while 0 <= r < h and 0 <= c < w:
-        if grid[r, c] == MAPPED_UNKNOWN and targets[r, c] >= TRUTH_FREE:
+        bit = np.int64(1) << (c % WORD)
+        if todo[r, c // WORD] & bit:
             grid[r, c] = MAPPED_FREE
-            todo[r, c // STRIP] -= 1
+            todo[r, c // WORD] ^= bit
             if pooled[r // k, c // k] == MAPPED_UNKNOWN:
                 pooled[r // k, c // k] = MAPPED_FREE
             if targets[r, c] == TRUTH_REACHABLE:

@@ -21,7 +21,7 @@ import numpy as np
 from numba import njit, prange
 from numba.typed import List
 
-from realistic_indoor.sim._map_kernels import free_per_strip, integrate_scan, render_local
+from realistic_indoor.sim._map_kernels import integrate_scan, render_local, todo_bits
 from realistic_indoor.sim.disc_physics import STATE_SIZE, THETA, X, Y, drive, segment_grid
 from realistic_indoor.sim.lidar import _readings
 from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, _targets
@@ -69,8 +69,8 @@ class Batch:
         self.seg_origin = List([np.array([0.0, 0.0, 1.0, 1.0, 1.0])] * n)
         self.grids = List([empty2] * n)
         self.pooled = List([empty2] * n)
-        self.todo = List([np.zeros((1, 1), dtype=np.int32)] * n)
-        self.todo_at_start = [np.zeros((1, 1), dtype=np.int32)] * n
+        self.todo = List([np.zeros((1, 1), dtype=np.int64)] * n)
+        self.todo_at_start = [np.zeros((1, 1), dtype=np.int64)] * n
 
     def load(self, slot: int, world: World, reach_m: float, pool: int) -> None:
         """Make ``world`` the building of ``slot`` and give robot ``slot`` an empty map of it.
@@ -94,7 +94,7 @@ class Batch:
         h, w = raster.shape
         self.grids[slot] = np.zeros((h, w), dtype=np.uint8)
         self.pooled[slot] = np.zeros((-(-h // pool), -(-w // pool)), dtype=np.uint8)
-        self.todo_at_start[slot] = free_per_strip(targets)
+        self.todo_at_start[slot] = todo_bits(targets)
         self.todo[slot] = self.todo_at_start[slot].copy()
         x0, y0 = raster.origin
         start = world.start_pose
@@ -172,7 +172,7 @@ def step_batch(
         seg_origin: Per building, the wall grid's origin, bucket side and size.
         grids: Per robot, its map (cell states), updated.
         pooled: Per robot, its pooled map, updated.
-        todo: Per robot, unknown free cells per row strip, updated.
+        todo: Per robot, the to-do bits of its map's free cells still unknown, updated.
         observed: ``(n,)`` reachable cells observed, updated.
         params: The robot's constants (:func:`~realistic_indoor.sim.disc_physics.drive_params`).
         cos_off: ``(n_beams,)`` cosines of the beam offsets.

@@ -20,10 +20,10 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
     TRUTH_FREE,
-    free_per_strip,
     integrate_scan,
     map_targets,
     render_local,
+    todo_bits,
 )
 from realistic_indoor.sim.raster import RASTER_FREE
 
@@ -93,7 +93,7 @@ class RobotMap:
         self._res = world.raster.resolution_m
         self._x0, self._y0 = world.raster.origin
         self._targets = _targets(world)
-        self._todo_at_start = free_per_strip(self._targets)
+        self._todo_at_start = todo_bits(self._targets)
         self._todo = self._todo_at_start.copy()
         self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
         self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
@@ -249,7 +249,7 @@ class FreeSpaceMarker:
         self._cos, self._sin, self._closed = beam_table(offsets)
         self._kind = np.full(len(offsets), RASTER_FREE, dtype=np.uint8)  # no beam marks a wall
         self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
-        self._todo_at_start = free_per_strip(self._targets)
+        self._todo_at_start = todo_bits(self._targets)
         self._todo = self._todo_at_start.copy()
         self._grid = np.zeros(self.shape, dtype=np.uint8)
         self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here

@@ -1,0 +1,84 @@
+"""The map kernels' to-do bits: which free cells are still unknown, 64 cells to a word."""
+
+import math
+
+import numpy as np
+import pytest
+
+from realistic_indoor.sim._map_kernels import (
+    MAPPED_FREE,
+    MAPPED_UNKNOWN,
+    TRUTH_FREE,
+    TRUTH_OUTSIDE,
+    TRUTH_REACHABLE,
+    TRUTH_WALL,
+    _mark_spans,
+    todo_bits,
+)
+from realistic_indoor.sim.lidar import Lidar, LidarConfig
+from realistic_indoor.sim.mapping import RobotMap
+from realistic_indoor.sim.world import World
+
+
+def _word(columns):
+    """The int64 whose bits ``columns`` are set, by Python's integers."""
+    value = sum(1 << c for c in columns)
+    return np.int64(value - (1 << 64) if value >= 1 << 63 else value)
+
+
+def test_todo_bits__one_bit_per_free_cell_64_to_a_word():
+    targets = np.full((2, 130), TRUTH_WALL, dtype=np.uint8)
+    targets[0, [0, 5, 63]] = TRUTH_FREE
+    targets[0, [64, 127]] = TRUTH_REACHABLE
+    targets[0, 129] = TRUTH_FREE
+    targets[1, 10] = TRUTH_OUTSIDE
+    bits = todo_bits(targets)
+    assert bits.shape == (2, 3)
+    assert bits.dtype == np.int64
+    assert bits[0].tolist() == [_word([0, 5, 63]), _word([0, 63]), _word([1])]
+    assert bits[1].tolist() == [0, 0, 0]
+
+
+@pytest.mark.parametrize(
+    ("c0", "c1"),
+    [(60, 70), (0, 64), (64, 128), (63, 64), (0, 200), (130, 131), (127, 129), (10, 63), (65, 127)],
+)
+def test_mark_spans__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
+    rng = np.random.default_rng(c0 * 1000 + c1)
+    targets = rng.choice(
+        np.array([TRUTH_WALL, TRUTH_OUTSIDE, TRUTH_FREE, TRUTH_REACHABLE], dtype=np.uint8), size=(3, 200)
+    )
+    targets[1, [c0 - 1, c1 % 200]] = TRUTH_FREE  # just outside the span: must stay unknown
+    grid = np.zeros((3, 200), dtype=np.uint8)
+    grid[1, 3::7] = MAPPED_FREE  # already seen: neither marked again nor counted
+    seen = grid[1] == MAPPED_FREE
+    todo = todo_bits(targets)
+    for c in np.flatnonzero(seen & (targets[1] >= TRUTH_FREE)):
+        todo[1, c // 64] ^= np.int64(1) << np.int64(c % 64)
+    pooled = np.zeros((1, 50), dtype=np.uint8)
+    rows, a, b = np.array([1]), np.array([c0]), np.array([c1])
+    new = _mark_spans(grid, pooled, 4, targets, todo, rows, a, b)
+    in_span = (np.arange(200) >= c0) & (np.arange(200) < c1)
+    marked = in_span & ~seen & (targets[1] >= TRUTH_FREE)
+    assert np.array_equal(grid[1] == MAPPED_FREE, seen | marked)
+    assert new == np.count_nonzero(marked & (targets[1] == TRUTH_REACHABLE))
+    assert np.array_equal(grid[[0, 2]], np.zeros((2, 200)))
+    still = (grid == MAPPED_UNKNOWN) & (targets >= TRUTH_FREE)
+    assert np.array_equal(todo, todo_bits(np.where(still, TRUTH_FREE, TRUTH_WALL).astype(np.uint8)))
+    assert np.array_equal(pooled[0] > 0, [marked[4 * p : 4 * p + 4].any() for p in range(50)])
+
+
+def test_robot_map__todo_bits_follow_the_map_along_a_drive(office):
+    world = World(office)
+    robot_map = RobotMap(world)
+    lidar = Lidar(LidarConfig(noise_std_m=0.0))
+    x, y, theta = world.start_pose
+    total = 0.0
+    for k in range(40):
+        pose = (x + 0.1 * k * math.cos(theta), y + 0.1 * k * math.sin(theta), theta + 0.2 * k)
+        total += robot_map.update(lidar.scan(world.raycaster, pose))
+        still = (robot_map.grid == MAPPED_UNKNOWN) & (robot_map._targets >= TRUTH_FREE)
+        expected = todo_bits(np.where(still, TRUTH_FREE, TRUTH_WALL).astype(np.uint8))
+        assert np.array_equal(robot_map._todo, expected)
+    free_seen = (robot_map.grid == MAPPED_FREE) & world.reachable
+    assert total == pytest.approx(np.count_nonzero(free_seen) * world.raster.resolution_m**2)

@@ -8,14 +8,16 @@ each in a fresh process with that checkout first on ``PYTHONPATH``:
    the same loop, CPU time, the median of five blocks: steps/s and their ratio;
 2. a new default office: ``make_generator("office")(rng)`` and ``World(building)``, CPU time, the
    median of 12 seeds (ms);
-3. ``gym.make_vec("OfficeExplore-v0", num_envs=8)`` with random actions, CPU time, the median of
-   three blocks of 300 steps: robot-steps/s and their ratio to CartPole-v1 (whatever vector
-   environment that checkout's ``make_vec`` gives: the native one, or Gymnasium's before it).
+3. ``gym.make_vec("OfficeExplore-v0", num_envs=N)`` (``--num-envs``, 8 unless given) with random
+   actions, CPU time, the median of three blocks of 300 steps: robot-steps per CPU second and
+   their ratio to CartPole-v1 (whatever vector environment that checkout's ``make_vec`` gives:
+   the native one, or Gymnasium's before it). CPU time sums the threads, so with ``--threads 2``
+   the figure is per core; ``--threads`` sets ``NUMBA_NUM_THREADS`` in both processes.
 
 Usage::
 
     .venv/bin/python benchmarks/bench_compare.py /tmp/old            # about two minutes
-    .venv/bin/python benchmarks/bench_compare.py /tmp/old --rounds 3
+    .venv/bin/python benchmarks/bench_compare.py /tmp/old --rounds 3 --num-envs 64 --threads 1
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ import sys
 from pathlib import Path
 
 MEASURE = r"""
-import json, statistics, time
+import json, statistics, sys, time
 import gymnasium as gym, numpy as np
 import realistic_indoor  # noqa: F401  (registers the ids)
 from realistic_indoor.generator import make_generator
@@ -69,17 +71,31 @@ for seed in range(12):
     world_ms.append(1e3 * (time.process_time() - middle))
 cartpole = rate(gym.make("CartPole-v1"), 50_000, 200, 5)
 office = rate(gym.make("OfficeExplore-v0"), 4_000, 200, 5)
-vector = rate(gym.make_vec("OfficeExplore-v0", num_envs=8), 300, 30, 3, robots=8)
+n_envs = int(sys.argv[1])
+vector = rate(gym.make_vec("OfficeExplore-v0", num_envs=n_envs), 300, 30, 3, robots=n_envs)
 print(json.dumps({"cartpole": cartpole, "office": office, "vector": vector,
                   "generation_ms": statistics.median(gen_ms), "world_ms": statistics.median(world_ms)}))
 """
 
 
-def measure(checkout: Path) -> dict[str, float]:
-    """The figures of one checkout, measured in a fresh process."""
+def measure(checkout: Path, num_envs: int = 8, threads: int | None = None) -> dict[str, float]:
+    """The figures of one checkout, measured in a fresh process.
+
+    Args:
+        checkout: Folder of the checkout, first on the process's ``PYTHONPATH``.
+        num_envs: Sub-environments of the vector environment measured.
+        threads: ``NUMBA_NUM_THREADS`` of the process; numba's default when ``None``.
+    """
     env = dict(os.environ, PYTHONPATH=str(checkout))
+    if threads is not None:
+        env["NUMBA_NUM_THREADS"] = str(threads)
     done = subprocess.run(
-        [sys.executable, "-c", MEASURE], env=env, cwd=checkout, capture_output=True, text=True, check=True
+        [sys.executable, "-c", MEASURE, str(num_envs)],
+        env=env,
+        cwd=checkout,
+        capture_output=True,
+        text=True,
+        check=True,
     )
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -89,19 +105,25 @@ def main(argv: list[str] | None = None) -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("other", type=Path, help="folder of the other checkout")
     p.add_argument("--rounds", type=int, default=2, help="measurements of each checkout (default 2)")
+    p.add_argument("--num-envs", type=int, default=8, help="sub-environments of the vector env (default 8)")
+    p.add_argument("--threads", type=int, default=None, help="NUMBA_NUM_THREADS of both processes")
     args = p.parse_args(argv)
     if args.rounds < 1:
         p.error(f"--rounds must be at least 1, got {args.rounds}")
+    if args.num_envs < 1:
+        p.error(f"--num-envs must be at least 1, got {args.num_envs}")
+    if args.threads is not None and not 1 <= args.threads <= (os.cpu_count() or 1):
+        p.error(f"--threads must be between 1 and this machine's {os.cpu_count()} cores, got {args.threads}")
     here = Path(__file__).resolve().parents[1]
     if not (args.other / "realistic_indoor").is_dir():
         p.error(f"{args.other} holds no realistic_indoor package; give a checkout of this repository")
     print("| checkout | round | OfficeExplore-v0 steps/s | CartPole-v1 steps/s | x CartPole-v1 |"
-          " make_vec N = 8 robot-steps/s | x CartPole-v1 |"
+          f" make_vec N = {args.num_envs} robot-steps per CPU s | x CartPole-v1 |"
           " generation ms | world build ms | generation + world ms |")  # fmt: skip
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in range(args.rounds):
         for name, checkout in (("other", args.other.resolve()), ("this", here)):
-            m = measure(checkout)
+            m = measure(checkout, args.num_envs, args.threads)
             total = m["generation_ms"] + m["world_ms"]
             print(
                 f"| {name} ({checkout}) | {r + 1} | {m['office']:,.0f} | {m['cartpole']:,.0f} | "

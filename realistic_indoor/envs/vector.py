@@ -334,7 +334,7 @@ class BatchedExploreEnv(VectorEnv):
     def _step_batch(self, b: Batch, kernel: Any) -> None:
         kernel(
             self._mode, self._commands, b.phys, b.robot_building, b.building_meta, b.skips, b.targets,
-            b.segments, b.seg_start, b.seg_items, b.seg_origin, b.grids, b.pooled, b.todo, b.observed,
+            b.segments, b.seg_start, b.seg_items, b.seg_origin, b.grids, b.pooled, b.todo, b.walls, b.observed,
             self._params, self._cos, self._sin, self._noise, self._lidar, self._local,
             self._scan_m, self._local_map, self._terms, self._motion,
         )  # fmt: skip

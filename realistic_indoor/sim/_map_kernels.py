@@ -36,7 +36,22 @@ _NUDGE = 1e-3
 
 @njit(cache=True, nogil=True)
 def integrate_scan(
-    grid, pooled, k, targets, todo, px, py, cos_h, sin_h, cos_off, sin_off, range_m, kind, scale, closed
+    grid,
+    pooled,
+    k,
+    targets,
+    todo,
+    walls,
+    px,
+    py,
+    cos_h,
+    sin_h,
+    cos_off,
+    sin_off,
+    range_m,
+    kind,
+    scale,
+    closed,
 ):  # pragma: no cover - compiled
     """Mark what one scan saw; return the number of reachable cells observed for the first time.
 
@@ -44,7 +59,8 @@ def integrate_scan(
     beams, up to the shorter of their ranges) plus the cells each beam crosses. Occupied: the
     wall cell each returned beam ends in. Ranges are in metres, ``scale`` is cells per metre;
     ``todo`` holds the map's to-do bits (:func:`todo_bits` of ``targets`` for an empty map),
-    which every cell marked free clears.
+    which every cell marked free clears; ``walls`` the same for the wall cells not yet marked
+    (:func:`wall_bits`), so a beam ending on a known wall reads one bit, not the map.
     """
     n = cos_off.shape[0]
     dxs = np.empty(n)
@@ -66,7 +82,8 @@ def integrate_scan(
         if kind[i] == RASTER_WALL:
             c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
             r = math.floor(py + (ts[i] + _NUDGE) * dys[i])
-            if 0 <= r < h and 0 <= c < w and targets[r, c] == TRUTH_WALL:
+            if 0 <= r < h and 0 <= c < w and walls[r, c // WORD] & (np.int64(1) << (c % WORD)):
+                walls[r, c // WORD] ^= np.int64(1) << (c % WORD)
                 grid[r, c] = MAPPED_OCCUPIED
                 pooled[r // k, c // k] = MAPPED_OCCUPIED
     return new
@@ -124,18 +141,32 @@ def map_targets(grid, reachable):  # pragma: no cover - compiled
     return out
 
 
-@njit(cache=True, nogil=True)
-def todo_bits(targets):  # pragma: no cover - compiled
+def todo_bits(targets: np.ndarray) -> np.ndarray:
     """The to-do bits of an empty map: a bit set for each free cell (``targets >= TRUTH_FREE``).
 
     Returns:
         ``(H, ceil(W / WORD))`` int64, bit ``j`` of word ``w`` for column ``WORD * w + j``.
     """
+    return _bits_where(targets, TRUTH_FREE, TRUTH_REACHABLE)
+
+
+def wall_bits(targets: np.ndarray) -> np.ndarray:
+    """The wall bits of an empty map: a bit set for each wall cell (``targets == TRUTH_WALL``).
+
+    Returns:
+        ``(H, ceil(W / WORD))`` int64, as :func:`todo_bits`.
+    """
+    return _bits_where(targets, TRUTH_WALL, TRUTH_WALL)
+
+
+@njit(cache=True, nogil=True)
+def _bits_where(targets, lo, hi):  # pragma: no cover - compiled
+    """Bits of the cells with ``lo <= targets <= hi``, :data:`WORD` cells to an int64."""
     h, w = targets.shape
     out = np.zeros((h, (w + WORD - 1) // WORD), dtype=np.int64)
     for r in range(h):
         for c in range(w):
-            if targets[r, c] >= TRUTH_FREE:
+            if lo <= targets[r, c] <= hi:
                 out[r, c // WORD] |= np.int64(1) << (c % WORD)
     return out
 

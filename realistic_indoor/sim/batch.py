@@ -21,7 +21,7 @@ import numpy as np
 from numba import njit, prange
 from numba.typed import List
 
-from realistic_indoor.sim._map_kernels import integrate_scan, render_local, todo_bits
+from realistic_indoor.sim._map_kernels import integrate_scan, render_local, todo_bits, wall_bits
 from realistic_indoor.sim.disc_physics import STATE_SIZE, THETA, X, Y, drive, segment_grid
 from realistic_indoor.sim.lidar import _readings
 from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, _targets
@@ -71,6 +71,8 @@ class Batch:
         self.pooled = List([empty2] * n)
         self.todo = List([np.zeros((1, 1), dtype=np.int64)] * n)
         self.todo_at_start = [np.zeros((1, 1), dtype=np.int64)] * n
+        self.walls = List([np.zeros((1, 1), dtype=np.int64)] * n)
+        self.walls_at_start = [np.zeros((1, 1), dtype=np.int64)] * n
 
     def load(self, slot: int, world: World, reach_m: float, pool: int) -> None:
         """Make ``world`` the building of ``slot`` and give robot ``slot`` an empty map of it.
@@ -96,6 +98,8 @@ class Batch:
         self.pooled[slot] = np.zeros((-(-h // pool), -(-w // pool)), dtype=np.uint8)
         self.todo_at_start[slot] = todo_bits(targets)
         self.todo[slot] = self.todo_at_start[slot].copy()
+        self.walls_at_start[slot] = wall_bits(targets)
+        self.walls[slot] = self.walls_at_start[slot].copy()
         x0, y0 = raster.origin
         start = world.start_pose
         reachable = float(np.count_nonzero(world.reachable))
@@ -106,6 +110,7 @@ class Batch:
         self.grids[i].fill(0)
         self.pooled[i].fill(0)
         self.todo[i][...] = self.todo_at_start[i]
+        self.walls[i][...] = self.walls_at_start[i]
         self.observed[i] = 0
         self.phys[i] = 0.0
         meta = self.building_meta[self.robot_building[i]]
@@ -115,7 +120,7 @@ class Batch:
     @property
     def nbytes(self) -> int:
         """Memory held by the batch's arrays and its worlds (bytes)."""
-        lists = (self.targets, self.grids, self.pooled, self.todo, self.segments, self.seg_items)
+        lists = (self.targets, self.grids, self.pooled, self.todo, self.walls, self.segments, self.seg_items)
         total = sum(int(a.nbytes) for lst in lists for a in lst)
         worlds = sum(w.nbytes for w in self.worlds if w is not None)
         return total + worlds + self.phys.nbytes
@@ -141,6 +146,7 @@ def step_batch(
     grids,
     pooled,
     todo,
+    walls,
     observed,
     params,
     cos_off,
@@ -173,6 +179,7 @@ def step_batch(
         grids: Per robot, its map (cell states), updated.
         pooled: Per robot, its pooled map, updated.
         todo: Per robot, the to-do bits of its map's free cells still unknown, updated.
+        walls: Per robot, the bits of its map's wall cells not yet marked, updated.
         observed: ``(n,)`` reachable cells observed, updated.
         params: The robot's constants (:func:`~realistic_indoor.sim.disc_physics.drive_params`).
         cos_off: ``(n_beams,)`` cosines of the beam offsets.
@@ -190,7 +197,7 @@ def step_batch(
         i = np.int64(k)  # prange counts in uint64; lists index with a signed int
         _step_robot(
             i, mode, commands, phys, robot_building, meta, skips, targets, segments, seg_start,
-            seg_items, seg_origin, grids, pooled, todo, observed, params, cos_off, sin_off, noise,
+            seg_items, seg_origin, grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise,
             lidar, local, out_scan, out_local, out_terms, out_motion,
         )  # fmt: skip
 
@@ -211,6 +218,7 @@ def step_batch_serial(
     grids,
     pooled,
     todo,
+    walls,
     observed,
     params,
     cos_off,
@@ -234,7 +242,7 @@ def step_batch_serial(
     for i in range(mode.shape[0]):
         _step_robot(
             i, mode, commands, phys, robot_building, meta, skips, targets, segments, seg_start,
-            seg_items, seg_origin, grids, pooled, todo, observed, params, cos_off, sin_off, noise,
+            seg_items, seg_origin, grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise,
             lidar, local, out_scan, out_local, out_terms, out_motion,
         )  # fmt: skip
 
@@ -256,6 +264,7 @@ def _step_robot(
     grids,
     pooled,
     todo,
+    walls,
     observed,
     params,
     cos_off,
@@ -308,6 +317,7 @@ def _step_robot(
         pool,
         targets[b],
         todo[i],
+        walls[i],
         px,
         py,
         ch,

@@ -24,6 +24,7 @@ from realistic_indoor.sim._map_kernels import (
     map_targets,
     render_local,
     todo_bits,
+    wall_bits,
 )
 from realistic_indoor.sim.raster import RASTER_FREE
 
@@ -95,6 +96,8 @@ class RobotMap:
         self._targets = _targets(world)
         self._todo_at_start = todo_bits(self._targets)
         self._todo = self._todo_at_start.copy()
+        self._walls_at_start = wall_bits(self._targets)
+        self._walls = self._walls_at_start.copy()
         self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
         self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
         h, w = world.raster.shape
@@ -129,7 +132,15 @@ class RobotMap:
     @property
     def nbytes(self) -> int:
         """Memory held by the map (bytes)."""
-        arrays = (self._grid, self._pooled, self._targets, self._todo, self._todo_at_start)
+        arrays = (
+            self._grid,
+            self._pooled,
+            self._targets,
+            self._todo,
+            self._todo_at_start,
+            self._walls,
+            self._walls_at_start,
+        )
         return int(sum(a.nbytes for a in arrays))
 
     def reset(self) -> None:
@@ -137,6 +148,7 @@ class RobotMap:
         self._grid.fill(MAPPED_UNKNOWN)
         self._pooled.fill(MAPPED_UNKNOWN)
         self._todo[...] = self._todo_at_start
+        self._walls[...] = self._walls_at_start
         self._observed = 0
 
     def update(self, scan: Scan) -> float:
@@ -159,6 +171,7 @@ class RobotMap:
             self._pool,
             self._targets,
             self._todo,
+            self._walls,
             (x - self._x0) / self._res,
             (y - self._y0) / self._res,
             math.cos(theta),
@@ -251,6 +264,7 @@ class FreeSpaceMarker:
         self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
         self._todo_at_start = todo_bits(self._targets)
         self._todo = self._todo_at_start.copy()
+        self._walls = np.zeros_like(self._todo)  # no cell is a wall
         self._grid = np.zeros(self.shape, dtype=np.uint8)
         self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here
         self._pooled = np.zeros((1, 1), dtype=np.uint8)
@@ -278,6 +292,7 @@ class FreeSpaceMarker:
             self._pool,
             self._targets,
             self._todo,
+            self._walls,
             x / res,
             y / res,
             math.cos(theta),

@@ -7,6 +7,7 @@ import pytest
 
 from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
+    MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
     TRUTH_FREE,
     TRUTH_OUTSIDE,
@@ -14,6 +15,7 @@ from realistic_indoor.sim._map_kernels import (
     TRUTH_WALL,
     _mark_spans,
     todo_bits,
+    wall_bits,
 )
 from realistic_indoor.sim.lidar import Lidar, LidarConfig
 from realistic_indoor.sim.mapping import RobotMap
@@ -37,6 +39,9 @@ def test_todo_bits__one_bit_per_free_cell_64_to_a_word():
     assert bits.dtype == np.int64
     assert bits[0].tolist() == [_word([0, 5, 63]), _word([0, 63]), _word([1])]
     assert bits[1].tolist() == [0, 0, 0]
+    walls = wall_bits(targets)
+    assert walls[0].tolist() == [~_word([0, 5, 63]), ~_word([0, 63]), _word([0])]
+    assert walls[1].tolist() == [~_word([10]), -1, _word(range(2))]
 
 
 @pytest.mark.parametrize(
@@ -68,7 +73,7 @@ def test_mark_spans__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
     assert np.array_equal(pooled[0] > 0, [marked[4 * p : 4 * p + 4].any() for p in range(50)])
 
 
-def test_robot_map__todo_bits_follow_the_map_along_a_drive(office):
+def test_robot_map__todo_and_wall_bits_follow_the_map_along_a_drive(office):
     world = World(office)
     robot_map = RobotMap(world)
     lidar = Lidar(LidarConfig(noise_std_m=0.0))
@@ -80,5 +85,10 @@ def test_robot_map__todo_bits_follow_the_map_along_a_drive(office):
         still = (robot_map.grid == MAPPED_UNKNOWN) & (robot_map._targets >= TRUTH_FREE)
         expected = todo_bits(np.where(still, TRUTH_FREE, TRUTH_WALL).astype(np.uint8))
         assert np.array_equal(robot_map._todo, expected)
+        unmarked = (robot_map.grid != MAPPED_OCCUPIED) & (robot_map._targets == TRUTH_WALL)
+        assert np.array_equal(
+            robot_map._walls, wall_bits(np.where(unmarked, TRUTH_WALL, TRUTH_FREE).astype(np.uint8))
+        )
+    assert np.count_nonzero(robot_map.grid == MAPPED_OCCUPIED) > 100
     free_seen = (robot_map.grid == MAPPED_FREE) & world.reachable
     assert total == pytest.approx(np.count_nonzero(free_seen) * world.raster.resolution_m**2)

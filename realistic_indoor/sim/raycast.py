@@ -222,43 +222,59 @@ def _skip_codes(resolution_m: float) -> tuple:
 
 
 @njit(cache=True, nogil=True, fastmath=True, inline="always")
-def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
-    """March one ray (cell units); return ``(t, kind)`` at the first non-free cell."""
-    h, w = skip.shape
-    fh, fw = float(h), float(w)
+def _direction(dx, dy):  # pragma: no cover - compiled
+    """A ray's direction with components below :data:`_AXIS` zeroed, and their inverses."""
     if abs(dx) < _AXIS:  # along an axis: x would stay on a cell boundary and the walk creep
         dx = 0.0
     if abs(dy) < _AXIS:
         dy = 0.0
-    inv_dx = 1.0 / dx if dx != 0.0 else _BIG
-    inv_dy = 1.0 / dy if dy != 0.0 else _BIG
+    return dx, dy, 1.0 / dx if dx != 0.0 else _BIG, 1.0 / dy if dy != 0.0 else _BIG
+
+
+@njit(cache=True, nogil=True, fastmath=True, inline="always")
+def _advance(skip, px, py, t, dx, dy, inv_dx, inv_dy):  # pragma: no cover - compiled
+    """One step of a ray's march from ``t`` (cells): ``(t, kind)``, ``RASTER_FREE`` while it goes on.
+
+    In a cell whose skip is positive the ray jumps that many cells; in one next to an obstacle
+    it steps exactly to the next cell boundary (and :data:`_BOUNDARY_NUDGE` past it). It stops,
+    ``t`` unchanged, in an obstacle cell or off the grid.
+    """
+    h, w = skip.shape
+    x = px + t * dx
+    y = py + t * dy
+    if x < 0.0 or y < 0.0 or x >= float(w) or y >= float(h):
+        return t, RASTER_OUTSIDE
+    c = int(x)  # the floor: x >= 0 here, and truncation is cheaper
+    r = int(y)
+    s = skip[r, c]
+    if s >= _SKIP_WALL:
+        return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE
+    if s > 0:
+        return t + s, RASTER_FREE
+    if dx > 0.0:
+        tx = (c + 1.0 - x) * inv_dx
+    elif dx < 0.0:
+        tx = (c - x) * inv_dx
+    else:
+        tx = _BIG
+    if dy > 0.0:
+        ty = (r + 1.0 - y) * inv_dy
+    elif dy < 0.0:
+        ty = (r - y) * inv_dy
+    else:
+        ty = _BIG
+    return t + min(tx, ty) + _BOUNDARY_NUDGE, RASTER_FREE
+
+
+@njit(cache=True, nogil=True, fastmath=True, inline="always")
+def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
+    """March one ray (cell units); return ``(t, kind)`` at the first non-free cell."""
+    dx, dy, inv_dx, inv_dy = _direction(dx, dy)
     t = 0.0
     while t < t_max:
-        x = px + t * dx
-        y = py + t * dy
-        if x < 0.0 or y < 0.0 or x >= fw or y >= fh:
-            return t, RASTER_OUTSIDE
-        c = int(x)  # the floor: x >= 0 here, and truncation is cheaper
-        r = int(y)
-        s = skip[r, c]
-        if s >= _SKIP_WALL:
-            return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE
-        if s > 0:
-            t += s
-        else:
-            if dx > 0.0:
-                tx = (c + 1.0 - x) * inv_dx
-            elif dx < 0.0:
-                tx = (c - x) * inv_dx
-            else:
-                tx = _BIG
-            if dy > 0.0:
-                ty = (r + 1.0 - y) * inv_dy
-            elif dy < 0.0:
-                ty = (r - y) * inv_dy
-            else:
-                ty = _BIG
-            t += min(tx, ty) + _BOUNDARY_NUDGE
+        t, kind = _advance(skip, px, py, t, dx, dy, inv_dx, inv_dy)
+        if kind != RASTER_FREE:
+            return t, kind
     return t_max, RASTER_FREE
 
 
@@ -266,12 +282,38 @@ def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
 def _cast_fan(
     skip, px, py, cos_h, sin_h, cos_off, sin_off, t_max, res, out_range, out_kind
 ):  # pragma: no cover
-    for i in range(cos_off.shape[0]):
-        dx = cos_h * cos_off[i] - sin_h * sin_off[i]
-        dy = sin_h * cos_off[i] + cos_h * sin_off[i]
-        t, kind = _march(skip, px, py, dx, dy, t_max)
-        out_range[i] = min(t, t_max) * res
-        out_kind[i] = kind
+    """March a fan of rays in lockstep: each round advances every ray still going by one step.
+
+    Each ray's arithmetic is :func:`_march`'s, so the results are the same to the bit; marching
+    the rays side by side lets the processor overlap one ray's memory reads and branches with
+    the others' (half the time of marching them one after another, 64 robots or 4).
+    """
+    n = cos_off.shape[0]
+    ray = np.empty((n, 5))  # dx, dy, 1 / dx, 1 / dy, t
+    going = np.empty(n, dtype=np.int64)
+    for i in range(n):
+        dx, dy, inv_dx, inv_dy = _direction(
+            cos_h * cos_off[i] - sin_h * sin_off[i], sin_h * cos_off[i] + cos_h * sin_off[i]
+        )
+        ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3], ray[i, 4] = dx, dy, inv_dx, inv_dy, 0.0
+        going[i] = i
+    m = n
+    while m > 0:
+        still = 0
+        for a in range(m):
+            i = going[a]
+            t = ray[i, 4]
+            kind = RASTER_FREE
+            if t < t_max:
+                t, kind = _advance(skip, px, py, t, ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3])
+            if kind == RASTER_FREE and t < t_max:
+                ray[i, 4] = t
+                going[still] = i
+                still += 1
+            else:
+                out_range[i] = min(t, t_max) * res
+                out_kind[i] = kind
+        m = still
 
 
 @njit(cache=True, nogil=True, fastmath=True)

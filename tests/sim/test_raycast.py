@@ -139,3 +139,25 @@ def test_free_distance_cells__is_the_exact_euclidean_distance_transform(office, 
     raster = rasterize(office)
     expected = distance_transform_edt(raster.grid == RASTER_FREE)
     assert np.abs(free_distance_cells(raster) - expected).max() < 1e-4
+
+
+def test_raycaster__a_fan_marched_in_lockstep_equals_its_rays_marched_one_by_one(office, rng):
+    from realistic_indoor.sim.raycast import _march
+
+    raycaster = Raycaster(rasterize(office, RES, THICKNESS))
+    free = np.argwhere(raycaster.raster.grid == RASTER_FREE)
+    offsets = np.linspace(-3 * math.pi / 4, 3 * math.pi / 4, 109)
+    t_max = MAX_RANGE / RES
+    for k in range(60):
+        r, c = free[rng.integers(len(free))]
+        x, y = raycaster.raster.cell_to_world(r, c)
+        heading = (math.pi / 2) * (k % 4) if k % 3 == 0 else rng.uniform(-math.pi, math.pi)  # axes too
+        angles = heading + offsets
+        hits = raycaster.cast((x, y), angles, MAX_RANGE)
+        px = (x - raycaster._x0) * raycaster._scale
+        py = (y - raycaster._y0) * raycaster._scale
+        dx, dy = np.cos(angles), np.sin(angles)  # the directions cast() gives the fan
+        for i in range(len(angles)):
+            t, kind = _march(raycaster._skip, px, py, dx[i], dy[i], t_max)
+            assert hits.kind[i] == kind
+            assert hits.range_m[i] == np.float32(min(t, t_max) * RES)

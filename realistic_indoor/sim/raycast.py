@@ -251,19 +251,19 @@ def _advance(skip, px, py, t, dx, dy, inv_dx, inv_dy):  # pragma: no cover - com
         return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE
     if s > 0:
         return t + s, RASTER_FREE
-    if dx > 0.0:
-        tx = (c + 1.0 - x) * inv_dx
-    elif dx < 0.0:
-        tx = (c - x) * inv_dx
-    else:
-        tx = _BIG
-    if dy > 0.0:
-        ty = (r + 1.0 - y) * inv_dy
-    elif dy < 0.0:
-        ty = (r - y) * inv_dy
-    else:
-        ty = _BIG
+    tx = _to_boundary(x, c, dx, inv_dx)
+    ty = _to_boundary(y, r, dy, inv_dy)
     return t + min(tx, ty) + _BOUNDARY_NUDGE, RASTER_FREE
+
+
+@njit(cache=True, nogil=True, fastmath=True, inline="always")
+def _to_boundary(x, cell, d, inv_d):  # pragma: no cover - compiled
+    """How far along the ray (cells) coordinate ``x`` in cell ``cell`` reaches the cell's edge."""
+    if d > 0.0:
+        return (cell + 1.0 - x) * inv_d
+    if d < 0.0:
+        return (cell - x) * inv_d
+    return _BIG
 
 
 @njit(cache=True, nogil=True, fastmath=True, inline="always")

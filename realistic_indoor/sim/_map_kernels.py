@@ -208,7 +208,7 @@ def _polygon_spans(vx, vy, h, w):  # pragma: no cover - compiled
     rc = np.empty(nv, dtype=np.int64)  # each vertex's first row whose centre is not below it
     lo, hi = h, 0
     for v in range(nv):
-        rc[v] = math.ceil(vy[v] - 0.5)
+        rc[v] = _ceil(vy[v] - 0.5)
         lo = min(lo, rc[v])
         hi = max(hi, rc[v])
     r_lo = max(lo, 0)
@@ -239,13 +239,24 @@ def _polygon_spans(vx, vy, h, w):  # pragma: no cover - compiled
     s = 0
     for i in range(n_rows):
         a, b = start[i], start[i + 1]
-        _sort_small(xs, a, b)
+        if b - a == 2:  # most rows: one span
+            if xs[a] > xs[a + 1]:
+                xs[a], xs[a + 1] = xs[a + 1], xs[a]
+        else:
+            _sort_small(xs, a, b)
         for j in range(a, b - 1, 2):
             rows[s] = r_lo + i
-            c0[s] = max(math.ceil(xs[j] - 0.5), 0)
-            c1[s] = min(math.ceil(xs[j + 1] - 0.5), w)
+            c0[s] = max(_ceil(xs[j] - 0.5), 0)
+            c1[s] = min(_ceil(xs[j + 1] - 0.5), w)
             s += 1
     return rows[:s], c0[:s], c1[:s]
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _ceil(x):  # pragma: no cover - compiled
+    """``math.ceil`` of a finite float as an int64, without calling the C library's ``ceil``."""
+    c = np.int64(x)  # truncation: the ceiling of a negative x, the floor of a positive one
+    return c + 1 if c < x else c
 
 
 @njit(cache=True, nogil=True)

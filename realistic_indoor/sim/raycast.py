@@ -249,21 +249,18 @@ def _advance(skip, px, py, t, dx, dy, inv_dx, inv_dy):  # pragma: no cover - com
     s = skip[r, c]
     if s >= _SKIP_WALL:
         return t, RASTER_WALL if s == _SKIP_WALL else RASTER_OUTSIDE
-    if s > 0:
-        return t + s, RASTER_FREE
-    tx = _to_boundary(x, c, dx, inv_dx)
-    ty = _to_boundary(y, r, dy, inv_dy)
-    return t + min(tx, ty) + _BOUNDARY_NUDGE, RASTER_FREE
+    # both steps computed, one chosen: which one a ray takes next is hard to predict, and a
+    # choice without a branch costs less than a mispredicted branch (a fifth of a fan's time)
+    jump = t + s
+    exact = t + min(_to_boundary(x, c, dx, inv_dx), _to_boundary(y, r, dy, inv_dy)) + _BOUNDARY_NUDGE
+    return jump if s > 0 else exact, RASTER_FREE
 
 
 @njit(cache=True, nogil=True, fastmath=True, inline="always")
 def _to_boundary(x, cell, d, inv_d):  # pragma: no cover - compiled
     """How far along the ray (cells) coordinate ``x`` in cell ``cell`` reaches the cell's edge."""
-    if d > 0.0:
-        return (cell + 1.0 - x) * inv_d
-    if d < 0.0:
-        return (cell - x) * inv_d
-    return _BIG
+    edge = cell + (1.0 if d > 0.0 else 0.0)  # the far edge: the one the ray heads for
+    return (edge - x) * inv_d if d != 0.0 else _BIG
 
 
 @njit(cache=True, nogil=True, fastmath=True, inline="always")

@@ -27,6 +27,7 @@ import json
 import os
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 MEASURE = r"""
@@ -78,15 +79,24 @@ print(json.dumps({"cartpole": cartpole, "office": office, "vector": vector,
 """
 
 
-def measure(checkout: Path, num_envs: int = 8, threads: int | None = None) -> dict[str, float]:
+def measure(
+    checkout: Path, num_envs: int = 8, threads: int | None = None, cache: Path | None = None
+) -> dict[str, float]:
     """The figures of one checkout, measured in a fresh process.
 
     Args:
         checkout: Folder of the checkout, first on the process's ``PYTHONPATH``.
         num_envs: Sub-environments of the vector environment measured.
         threads: ``NUMBA_NUM_THREADS`` of the process; numba's default when ``None``.
+        cache: ``NUMBA_CACHE_DIR`` of the process; the checkout's ``__pycache__`` when ``None``.
+
+    Returns:
+        Steps/s of the single env, the vector env and CartPole-v1, and the new office's
+        generation and world build (ms), by name.
     """
     env = dict(os.environ, PYTHONPATH=str(checkout))
+    if cache is not None:
+        env["NUMBA_CACHE_DIR"] = str(cache)
     if threads is not None:
         env["NUMBA_NUM_THREADS"] = str(threads)
     done = subprocess.run(
@@ -121,9 +131,19 @@ def main(argv: list[str] | None = None) -> None:
           f" make_vec N = {args.num_envs} robot-steps per CPU s | x CartPole-v1 |"
           " generation ms | world build ms | generation + world ms |")  # fmt: skip
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    with tempfile.TemporaryDirectory() as caches:
+        _rounds(args, here, Path(caches))
+
+
+def _rounds(args: argparse.Namespace, here: Path, caches: Path) -> None:
+    """The table's rows: each checkout compiles into its own cache, made empty for this run.
+
+    numba checks a cached kernel against its own module's file only, so a checkout's
+    ``__pycache__`` may hold a kernel compiled with an older version of a kernel it calls.
+    """
     for r in range(args.rounds):
         for name, checkout in (("other", args.other.resolve()), ("this", here)):
-            m = measure(checkout, args.num_envs, args.threads)
+            m = measure(checkout, args.num_envs, args.threads, caches / name)
             total = m["generation_ms"] + m["world_ms"]
             print(
                 f"| {name} ({checkout}) | {r + 1} | {m['office']:,.0f} | {m['cartpole']:,.0f} | "

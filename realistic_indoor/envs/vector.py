@@ -44,7 +44,8 @@ def step_threads(num_envs: int, available: int) -> int:
     One per :data:`ROBOTS_PER_THREAD` robots, at most ``available``. The environment first asks
     with numba's most (``NUMBA_NUM_THREADS``): for 1 the step runs on the calling thread
     (:func:`~realistic_indoor.sim.batch.step_batch_serial`) and numba's thread pool is not
-    started; otherwise it asks again with the current ``numba.get_num_threads()``.
+    started; otherwise it asks again with the current ``numba.get_num_threads()``, and for 1
+    runs the serial kernel too.
     """
     return max(1, min(available, num_envs // ROBOTS_PER_THREAD))
 

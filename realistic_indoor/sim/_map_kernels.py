@@ -28,8 +28,8 @@ beam tests a bit of an array an eighth of the map's size."""
 _DE_BRUIJN = 0x03F79D71B4CB0A89
 """A de Bruijn sequence of order 6: the top 6 bits of it times a power of two name the power."""
 _LOWEST_BIT = np.zeros(64, dtype=np.int64)
-for _j in range(64):
-    _LOWEST_BIT[((_DE_BRUIJN << _j) & 0xFFFFFFFFFFFFFFFF) >> 58] = _j
+_LOWEST_BIT[[((_DE_BRUIJN << j) & 0xFFFFFFFFFFFFFFFF) >> 58 for j in range(64)]] = np.arange(64)
+"""Which bit a power of two is, by the top 6 bits of it times :data:`_DE_BRUIJN`."""
 _NUDGE = 1e-3
 """Distance (cells) past a beam's end at which the wall cell it hit is looked up."""
 
@@ -91,6 +91,7 @@ def integrate_scan(
 
 @njit(cache=True, nogil=True)
 def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cover - compiled
+    """Mark free the cells still to do in the row spans ``[c0, c1)`` of ``rows``; the new reachable ones."""
     new = 0
     for i in range(rows.shape[0]):
         r = rows[i]
@@ -104,7 +105,7 @@ def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cov
                 todo[r, word] ^= bits
                 base = word * WORD
                 while bits != 0:
-                    low = bits & -bits
+                    low = bits & -bits  # the lowest set bit; the product wraps, ">>" keeps the sign
                     cc = base + _LOWEST_BIT[((low * _DE_BRUIJN) >> 58) & 63]
                     bits ^= low
                     grid[r, cc] = MAPPED_FREE

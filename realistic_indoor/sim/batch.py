@@ -121,6 +121,7 @@ class Batch:
     def nbytes(self) -> int:
         """Memory held by the batch's arrays and its worlds (bytes)."""
         lists = (self.targets, self.grids, self.pooled, self.todo, self.walls, self.segments, self.seg_items)
+        lists += (self.todo_at_start, self.walls_at_start)
         total = sum(int(a.nbytes) for lst in lists for a in lst)
         worlds = sum(w.nbytes for w in self.worlds if w is not None)
         return total + worlds + self.phys.nbytes

@@ -53,7 +53,7 @@ def test_mark_spans__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
     targets = rng.choice(
         np.array([TRUTH_WALL, TRUTH_OUTSIDE, TRUTH_FREE, TRUTH_REACHABLE], dtype=np.uint8), size=(3, 200)
     )
-    targets[1, [c0 - 1, c1 % 200]] = TRUTH_FREE  # just outside the span: must stay unknown
+    targets[1, [c0 - 1, c1 % 200]] = TRUTH_FREE  # beside the span (in it when it reaches an end)
     grid = np.zeros((3, 200), dtype=np.uint8)
     grid[1, 3::7] = MAPPED_FREE  # already seen: neither marked again nor counted
     seen = grid[1] == MAPPED_FREE
@@ -92,3 +92,17 @@ def test_robot_map__todo_and_wall_bits_follow_the_map_along_a_drive(office):
     assert np.count_nonzero(robot_map.grid == MAPPED_OCCUPIED) > 100
     free_seen = (robot_map.grid == MAPPED_FREE) & world.reachable
     assert total == pytest.approx(np.count_nonzero(free_seen) * world.raster.resolution_m**2)
+
+
+def test_batch__a_robot_reset_in_the_same_building_maps_as_on_its_first_episode(office):
+    from realistic_indoor.envs.vector import BatchedExploreEnv
+
+    env = BatchedExploreEnv(num_envs=1, source=office, max_steps=5)
+    first, _ = env.reset(seed=0)
+    first_grid = env._batch.grids[0].copy()
+    for _ in range(5):
+        env.step(np.array([[1.0, 0.5]]))
+    again = env.step(np.array([[0.0, 0.0]]))[0]  # the autoreset: the same building, a new map
+    assert np.array_equal(env._batch.grids[0], first_grid)
+    assert (first_grid == MAPPED_OCCUPIED).any()
+    assert np.array_equal(again["local_map"], first["local_map"])

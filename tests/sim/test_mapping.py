@@ -107,6 +107,16 @@ def test_robot_map__reset_forgets_everything(tiny_world):
     assert (m.local_view(tiny_world.start_pose) == PIXEL_UNKNOWN).all()
 
 
+def test_robot_map__after_a_reset_maps_a_scan_as_a_new_map_does(tiny_world):
+    scan = _scan_from(tiny_world, tiny_world.start_pose)
+    used, fresh = RobotMap(tiny_world), RobotMap(tiny_world)
+    used.update(scan)
+    used.reset()
+    assert used.update(scan) == fresh.update(scan) > 0
+    assert np.array_equal(used.grid, fresh.grid)
+    assert (used.grid == MAPPED_OCCUPIED).any()  # walls marked again after the reset
+
+
 def test_robot_map__grid_is_read_only(tiny_world):
     with pytest.raises(ValueError):
         RobotMap(tiny_world).grid[0, 0] = 1

@@ -314,16 +314,15 @@ class BatchedExploreEnv(VectorEnv):
         for k in np.flatnonzero(self._mode == STEP):
             self._noise_for(int(k))
         b = self._batch
-        if step_threads(self.num_envs, numba.config.NUMBA_NUM_THREADS) == 1:
-            # one thread: numba's thread pool is not even started (get_num_threads would start
-            # it), so its OpenMP threads cannot slow torch down in the same process
-            self._step_batch(b, step_batch_serial)
-            return
-        outer = numba.get_num_threads()
-        used = step_threads(self.num_envs, outer)
+        # numba's thread pool is asked only when it could give more than one thread
+        # (get_num_threads starts it, and its OpenMP threads slow torch down in the same process)
+        used = step_threads(self.num_envs, numba.config.NUMBA_NUM_THREADS)
+        if used > 1:
+            outer = numba.get_num_threads()
+            used = step_threads(self.num_envs, outer)
         if used == 1:
-            # numba's parallel kernel on one thread ran a robot-step half as slow again as the
-            # serial one (97 against 65 us, 64 robots, 2-core AMD EPYC, OpenMP layer)
+            # the serial kernel: numba's parallel one on one thread ran a robot-step half as slow
+            # again (97 against 65 us, 64 robots, 2-core AMD EPYC, OpenMP layer)
             self._step_batch(b, step_batch_serial)
             return
         numba.set_num_threads(used)

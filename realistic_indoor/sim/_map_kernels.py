@@ -82,8 +82,11 @@ def integrate_scan(
         if kind[i] == RASTER_WALL:
             c = math.floor(px + (ts[i] + _NUDGE) * dxs[i])
             r = math.floor(py + (ts[i] + _NUDGE) * dys[i])
-            if 0 <= r < h and 0 <= c < w and walls[r, c // WORD] & (np.int64(1) << (c % WORD)):
-                walls[r, c // WORD] ^= np.int64(1) << (c % WORD)
+            if not (0 <= r < h and 0 <= c < w):
+                continue
+            bit = np.int64(1) << (c % WORD)
+            if walls[r, c // WORD] & bit:
+                walls[r, c // WORD] ^= bit
                 grid[r, c] = MAPPED_OCCUPIED
                 pooled[r // k, c // k] = MAPPED_OCCUPIED
     return new

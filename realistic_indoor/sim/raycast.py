@@ -288,21 +288,23 @@ def _cast_fan(
     n = cos_off.shape[0]
     ray = np.empty((n, 5))  # dx, dy, 1 / dx, 1 / dy, t
     going = np.empty(n, dtype=np.int64)
+    m = 0
     for i in range(n):
         dx, dy, inv_dx, inv_dy = _direction(
             cos_h * cos_off[i] - sin_h * sin_off[i], sin_h * cos_off[i] + cos_h * sin_off[i]
         )
         ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3], ray[i, 4] = dx, dy, inv_dx, inv_dy, 0.0
-        going[i] = i
-    m = n
+        if t_max > 0.0:  # every ray still going has t < t_max
+            going[m] = i
+            m += 1
+        else:  # as _march: no step at all
+            out_range[i] = t_max * res
+            out_kind[i] = RASTER_FREE
     while m > 0:
         still = 0
         for a in range(m):
             i = going[a]
-            t = ray[i, 4]
-            kind = RASTER_FREE
-            if t < t_max:
-                t, kind = _advance(skip, px, py, t, ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3])
+            t, kind = _advance(skip, px, py, ray[i, 4], ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3])
             if kind == RASTER_FREE and t < t_max:
                 ray[i, 4] = t
                 going[still] = i

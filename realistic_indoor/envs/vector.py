@@ -16,6 +16,7 @@ import numba
 import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
+from numba.typed import List
 
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
@@ -25,7 +26,7 @@ from realistic_indoor.envs.rewards import weighted_sum
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
-from realistic_indoor.sim.lidar import beam_offsets
+from realistic_indoor.sim.lidar import beam_offsets, draw_noise
 from realistic_indoor.sim.mapping import beam_table
 from realistic_indoor.sim.world import World
 
@@ -147,6 +148,7 @@ class BatchedExploreEnv(VectorEnv):
         self._collisions = np.zeros(n, dtype=np.int64)
         self._autoreset = np.zeros(n, dtype=bool)
         self._rngs: list[np.random.Generator] = []
+        self._rng_list: Any = None  # the same generators in a numba typed List, for draw_noise
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._slots: dict[str, np.ndarray] | None = None
@@ -170,6 +172,7 @@ class BatchedExploreEnv(VectorEnv):
         if seeds is not None or not self._rngs:
             seeds = seeds or [None] * self.num_envs
             self._rngs = [np.random.default_rng(s) for s in seeds]
+            self._rng_list = List(self._rngs)
         self._mode[:] = RESET
         for k in range(self.num_envs):
             self._reset_one(k)
@@ -246,6 +249,7 @@ class BatchedExploreEnv(VectorEnv):
         self._batch = Batch(self.num_envs)
         self._slots = None
         self._rngs = []
+        self._rng_list = None
 
     # -- state a user may inspect --------------------------------------------------------------------
     @property
@@ -311,8 +315,8 @@ class BatchedExploreEnv(VectorEnv):
             self._rngs[k].standard_normal(out=self._noise[k])
 
     def _run(self) -> None:
-        for k in np.flatnonzero(self._mode == STEP):
-            self._noise_for(int(k))
+        if self.config.lidar.noise_std_m > 0:
+            draw_noise(self._rng_list, self._mode == STEP, self._noise)
         b = self._batch
         # numba's thread pool is asked only when it could give more than one thread
         # (get_num_threads starts it, and its OpenMP threads slow torch down in the same process)

@@ -119,11 +119,30 @@ def row_distances(squares, out, stack_at, stack_height):  # pragma: no cover - c
             q += 1
             continue
         first = q
+        level = squares[q]
+        level_run = True  # every cell of the run at one column distance
         while q < w and squares[q] != 0.0:
+            level_run &= squares[q] == level
             q += 1
+        if level_run and first > 0 and q < w:
+            _walled_level_run(out, first, q - 1, level)
+            continue
         lo, hi = max(first - 1, 0), min(q, w - 1)
         if not _stretch_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height):
             _run_distances(squares, out, first, q - 1, lo, hi, stack_at, stack_height)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _walled_level_run(out, first, last, level):  # pragma: no cover - compiled
+    """Distances of cells ``first..last``, all at column distance² ``level``, between obstacle cells.
+
+    The most common run in a building (a room's row between its side walls): each cell is
+    nearest to one of the two obstacle cells beside the run or to its own column's, which is
+    what :func:`_stretch_distances` finds for these three stretches, without the envelope.
+    """
+    inner = _FAR if level >= _INF else np.float32(np.sqrt(np.float64(level)))
+    for q in range(first, last + 1):
+        out[q] = min(np.float32(min(q - first + 1, last + 1 - q)), inner)
 
 
 @njit(cache=True, nogil=True, inline="always")

@@ -165,13 +165,23 @@ def wall_bits(targets: np.ndarray) -> np.ndarray:
 
 @njit(cache=True, nogil=True)
 def _bits_where(targets, lo, hi):  # pragma: no cover - compiled
-    """Bits of the cells with ``lo <= targets <= hi``, :data:`WORD` cells to an int64."""
+    """Bits of the cells with ``lo <= targets <= hi``, :data:`WORD` cells to an int64.
+
+    Each word is gathered in a register and stored once (an ``|=`` into the array for every
+    cell made the loop wait on its own stores: six times slower).
+    """
     h, w = targets.shape
-    out = np.zeros((h, (w + WORD - 1) // WORD), dtype=np.int64)
+    n_words = (w + WORD - 1) // WORD
+    out = np.empty((h, n_words), dtype=np.int64)
     for r in range(h):
-        for c in range(w):
-            if lo <= targets[r, c] <= hi:
-                out[r, c // WORD] |= np.int64(1) << (c % WORD)
+        row = targets[r]
+        for word in range(n_words):
+            base = word * WORD
+            bits = np.int64(0)
+            for j in range(min(WORD, w - base)):
+                v = row[base + j]
+                bits |= np.int64(lo <= v and v <= hi) << j
+            out[r, word] = bits
     return out
 
 
@@ -337,22 +347,48 @@ def render_local(pooled, lut, px, py, cos_h, sin_h, step, out):  # pragma: no co
     """Sample the pooled map on a square grid turned to the heading (pooled-cell units).
 
     Pixel ``(0, 0)`` is ahead and to the left; pixels off the map show ``lut[MAPPED_UNKNOWN]``.
+    Rows are sampled two at a time, so that the two rows' running sums overlap instead of each
+    pixel waiting on the previous one's.
     """
-    h, w = pooled.shape
-    fh, fw = float(h), float(w)
     s = out.shape[0]
     half = (s - 1) / 2.0
     unknown = lut[MAPPED_UNKNOWN]
     col_dx = step * sin_h  # one pixel to the right: the heading turned clockwise
     col_dy = -step * cos_h
-    for i in range(s):
-        ahead = (half - i) * step
-        x = px + ahead * cos_h - half * col_dx
-        y = py + ahead * sin_h - half * col_dy
+    for i in range(0, s - 1, 2):
+        xa, ya = _row_start(px, py, cos_h, sin_h, step, half, i, col_dx, col_dy)
+        xb, yb = _row_start(px, py, cos_h, sin_h, step, half, i + 1, col_dx, col_dy)
         for j in range(s):
-            if 0.0 <= x < fw and 0.0 <= y < fh:  # then truncation is the floor, and cheaper
-                out[i, j] = lut[pooled[int(y), int(x)]]
-            else:
-                out[i, j] = unknown
+            out[i, j] = _pixel(pooled, lut, xa, ya, unknown)
+            out[i + 1, j] = _pixel(pooled, lut, xb, yb, unknown)
+            xa += col_dx
+            ya += col_dy
+            xb += col_dx
+            yb += col_dy
+    if s % 2:
+        x, y = _row_start(px, py, cos_h, sin_h, step, half, s - 1, col_dx, col_dy)
+        for j in range(s):
+            out[s - 1, j] = _pixel(pooled, lut, x, y, unknown)
             x += col_dx
             y += col_dy
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _row_start(px, py, cos_h, sin_h, step, half, i, col_dx, col_dy):  # pragma: no cover - compiled
+    """Where row ``i`` of the local view starts (its left pixel), in pooled-cell units."""
+    ahead = (half - i) * step
+    return px + ahead * cos_h - half * col_dx, py + ahead * sin_h - half * col_dy
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _pixel(pooled, lut, x, y, unknown):  # pragma: no cover - compiled
+    """The grey level at ``(x, y)`` (pooled-cell units): ``unknown`` off the map.
+
+    The cell's indices as unsigned integers: a negative one wraps to a huge one, so one
+    comparison per axis tests both ends, and indexing needs no check for negative indices.
+    """
+    c = np.uint64(np.int64(math.floor(x)))
+    r = np.uint64(np.int64(math.floor(y)))
+    if c < np.uint64(pooled.shape[1]) and r < np.uint64(pooled.shape[0]):
+        return lut[pooled[r, c]]
+    return unknown

@@ -140,3 +140,23 @@ def _readings(true_m, kind, noise, noise_std_m, max_range_m, out):  # pragma: no
             out[i] = min(max(r, 0.0), max_range_m)
         else:
             out[i] = max_range_m
+
+
+@njit(cache=True, nogil=True)
+def draw_noise(generators, chosen, out):  # pragma: no cover - compiled
+    """Fill row ``i`` of ``out`` with standard normal draws from ``generators[i]`` where ``chosen[i]``.
+
+    One compiled call for a batch of robots: the values and the generators' states after it are
+    those of ``generators[i].standard_normal(out=out[i])`` for each chosen ``i`` (numba draws
+    with NumPy's algorithm from the same bit generator), at a quarter of the cost of 64 calls.
+
+    Args:
+        generators: numba typed ``List`` of ``np.random.Generator``, one per row of ``out``.
+        chosen: ``(N,)`` bool, the rows to fill.
+        out: ``(N, n_beams)`` float64, written where chosen.
+    """
+    for i in range(out.shape[0]):
+        if chosen[i]:
+            g = generators[i]
+            for j in range(out.shape[1]):
+                out[i, j] = g.standard_normal()

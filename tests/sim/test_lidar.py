@@ -2,9 +2,10 @@ import math
 
 import numpy as np
 import pytest
+from numba.typed import List
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.lidar import Lidar, LidarConfig, beam_offsets
+from realistic_indoor.sim.lidar import Lidar, LidarConfig, beam_offsets, draw_noise
 from realistic_indoor.sim.raster import RASTER_OUTSIDE, RASTER_WALL, rasterize
 from realistic_indoor.sim.raycast import Raycaster
 
@@ -91,3 +92,20 @@ def test_lidar__same_rng_seed_gives_the_same_scan(tiny_raycaster):
 def test_lidar_config__bad_values_raise_config_error(kwargs):
     with pytest.raises(ConfigError, match="LidarConfig"):
         LidarConfig(**kwargs)
+
+
+def test_draw_noise__chosen_rows_get_each_generators_own_normal_draws():
+    out = np.full((3, 5), 9.0)
+    draw_noise(List([np.random.default_rng(s) for s in (1, 2, 3)]), np.array([True, False, True]), out)
+    # the same draws NumPy makes from generators seeded alike; the row not chosen is untouched
+    assert out[0].tolist() == np.random.default_rng(1).standard_normal(5).tolist()
+    assert out[1].tolist() == [9.0] * 5
+    assert out[2].tolist() == np.random.default_rng(3).standard_normal(5).tolist()
+
+
+def test_draw_noise__advances_the_generators_a_python_caller_holds():
+    generators = [np.random.default_rng(4), np.random.default_rng(5)]
+    draw_noise(List(generators), np.array([True, True]), np.empty((2, 3)))
+    expected = np.random.default_rng(4)
+    expected.standard_normal(3)
+    assert generators[0].random() == expected.random()  # the next value after the three drawn

@@ -1,4 +1,4 @@
-"""The map kernels' to-do bits: which free cells are still unknown, 64 cells to a word."""
+"""The map kernels: to-do bits (which free cells are still unknown, 64 cells to a word), the local view."""
 
 import math
 
@@ -14,6 +14,7 @@ from realistic_indoor.sim._map_kernels import (
     TRUTH_REACHABLE,
     TRUTH_WALL,
     _mark_spans,
+    render_local,
     todo_bits,
     wall_bits,
 )
@@ -106,3 +107,35 @@ def test_batch__a_robot_reset_in_the_same_building_maps_as_on_its_first_episode(
     assert np.array_equal(env._batch.grids[0], first_grid)
     assert (first_grid == MAPPED_OCCUPIED).any()
     assert np.array_equal(again["local_map"], first["local_map"])
+
+
+_GREY = np.array([128, 255, 0], dtype=np.uint8)  # unknown, free, occupied
+_POOLED = np.array(
+    [[MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED], [MAPPED_FREE, MAPPED_FREE, MAPPED_UNKNOWN]], np.uint8
+)
+
+
+@pytest.mark.parametrize(
+    ("px", "py", "cos_h", "sin_h", "expected"),
+    [
+        # heading +x from cell (0, 1)'s centre: row i is 1 - i cells ahead, column j 1 - j cells
+        # to the left (+y); the right column falls off the map (y < 0)
+        (1.5, 0.5, 1.0, 0.0, [[128, 0, 128], [255, 255, 128], [255, 128, 128]]),
+        # heading -x from cell (0, 0)'s centre: the top row (x < 0) and the left column (y < 0) are off
+        (0.5, 0.5, -1.0, 0.0, [[128, 128, 128], [128, 128, 255], [128, 255, 255]]),
+    ],
+)
+def test_render_local__an_odd_view_samples_the_cells_by_hand(px, py, cos_h, sin_h, expected):
+    out = np.full((3, 3), 7, dtype=np.uint8)
+    render_local(_POOLED, _GREY, px, py, cos_h, sin_h, 1.0, out)
+    assert out.tolist() == expected
+
+
+def test_render_local__a_pixel_on_the_far_edge_of_the_map_is_off_it():
+    out = np.zeros((1, 1), dtype=np.uint8)
+    render_local(_POOLED, _GREY, 3.0, 0.5, 1.0, 0.0, 1.0, out)  # x == width: past the last cell
+    assert out[0, 0] == 128
+    render_local(_POOLED, _GREY, 2.999, 0.5, 1.0, 0.0, 1.0, out)
+    assert out[0, 0] == 0
+    render_local(_POOLED, _GREY, -0.001, 0.5, 1.0, 0.0, 1.0, out)  # just before the first cell
+    assert out[0, 0] == 128

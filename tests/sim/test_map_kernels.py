@@ -13,7 +13,10 @@ from realistic_indoor.sim._map_kernels import (
     TRUTH_OUTSIDE,
     TRUTH_REACHABLE,
     TRUTH_WALL,
+    _fan_outline,
     _mark_spans,
+    _polygon_spans,
+    _walk_and_mark,
     render_local,
     todo_bits,
     wall_bits,
@@ -93,6 +96,43 @@ def test_robot_map__todo_and_wall_bits_follow_the_map_along_a_drive(office):
     assert np.count_nonzero(robot_map.grid == MAPPED_OCCUPIED) > 100
     free_seen = (robot_map.grid == MAPPED_FREE) & world.reachable
     assert total == pytest.approx(np.count_nonzero(free_seen) * world.raster.resolution_m**2)
+
+
+@pytest.mark.parametrize("fov_deg", [270.0, 360.0])
+def test_robot_map__marks_what_the_whole_fan_and_every_beam_walk_mark(office, fov_deg):
+    # the map update looks only at rows and beams near a cell still to do; the reference
+    # fills every row of the fan and walks every beam over a copy of the same map
+    world = World(office)
+    robot_map = RobotMap(world)
+    lidar = Lidar(LidarConfig(fov_rad=math.radians(fov_deg), noise_std_m=0.0))
+    grid = robot_map._grid.copy()
+    pooled = robot_map._pooled.copy()
+    todo = robot_map._todo.copy()
+    targets, k, res = robot_map._targets, robot_map._pool, world.raster.resolution_m
+    x, y, theta = world.start_pose
+    for step in range(60):
+        pose = (x + 0.05 * step * math.cos(theta), y + 0.05 * step * math.sin(theta), theta + 0.15 * step)
+        scan = lidar.scan(world.raycaster, pose)
+        new = round(robot_map.update(scan) / res**2)
+        px, py = (pose[0] - world.raster.origin[0]) / res, (pose[1] - world.raster.origin[1]) / res
+        dxs = math.cos(pose[2]) * robot_map._cos - math.sin(pose[2]) * robot_map._sin
+        dys = math.sin(pose[2]) * robot_map._cos + math.cos(pose[2]) * robot_map._sin
+        ts = scan.true.range_m.astype(np.float64) * (1.0 / res)  # as the kernel: float64 products
+        vx, vy = _fan_outline(px, py, dxs, dys, ts, robot_map._closed)
+        want = _mark_spans(grid, pooled, k, targets, todo, *_polygon_spans(vx, vy, *grid.shape))
+        n = len(ts)
+        for i in range(n):
+            neighbours = (
+                [ts[(i - 1) % n], ts[(i + 1) % n]] if robot_map._closed else ts[max(i - 1, 0) : i + 2]
+            )
+            t0 = max(min(ts[i], *neighbours) - 1.0, 0.0)
+            want += _walk_and_mark(
+                grid, pooled, k, targets, todo, px, py, dxs[i], dys[i], t0, ts[i], *grid.shape
+            )
+        assert new == want
+        assert np.array_equal(robot_map._todo, todo)
+        assert np.array_equal(robot_map.grid == MAPPED_FREE, grid == MAPPED_FREE)
+    assert np.count_nonzero(grid == MAPPED_FREE) > 10_000
 
 
 def test_batch__a_robot_reset_in_the_same_building_maps_as_on_its_first_episode(office):

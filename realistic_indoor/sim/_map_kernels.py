@@ -232,32 +232,87 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
     """Mark free the cells still to do whose centre lies in the fan's outline; the new reachable ones.
 
     The cells :func:`_polygon_spans` and :func:`_mark_spans` mark, found with less work: along
-    a drive only a few rows of a scan hold a cell still to do (3 to 6 of some 240 rows of a
-    default office), so a row's crossings are sorted into spans and marked only when some cell
-    between its leftmost and rightmost crossing is still to do.
+    a drive only a few rows of a scan hold a cell still to do (about 3 of 300 rows of a default
+    office), so one pass over the outline keeps only each row's leftmost and rightmost
+    crossing, and a row's crossings are gathered, sorted and marked only when a cell between
+    those two is still to do: edge by edge for the rows of one edge when few rows qualify, by a
+    counting sort of every row's crossings when many do (a scan into unexplored floor).
     """
     h, w = grid.shape
-    r_lo, start, xs = _row_crossings(vx, vy, h)
+    nv = vx.shape[0]
+    rc, r_lo, n_rows = _outline_rows(vy, h)
+    left = np.full(n_rows, np.inf)
+    right = np.full(n_rows, -np.inf)
+    crossings = 0
+    for e in range(nv):
+        f = e + 1 if e + 1 < nv else 0
+        ra = max(min(rc[e], rc[f]), r_lo)
+        rb = min(max(rc[e], rc[f]), r_lo + n_rows)
+        if rb > ra:
+            slope = (vx[f] - vx[e]) / (vy[f] - vy[e])
+            for r in range(ra, rb):
+                x = vx[e] + (r + 0.5 - vy[e]) * slope
+                left[r - r_lo] = min(left[r - r_lo], x)
+                right[r - r_lo] = max(right[r - r_lo], x)
+            crossings += rb - ra
+    rows = np.empty(n_rows, dtype=np.int64)  # the rows with a cell still to do between their ends
+    n = 0
+    for i in range(n_rows):
+        c0 = max(_ceil(left[i] - 0.5), 0) if left[i] <= right[i] else w
+        c1 = min(_ceil(right[i] - 0.5), w) if left[i] <= right[i] else 0
+        if c1 > c0 and _any_to_do(todo, r_lo + i, c0, c1):
+            rows[n] = r_lo + i
+            n += 1
     new = 0
-    for i in range(start.shape[0] - 1):
-        a, b = start[i], start[i + 1]
-        if b - a < 2:
-            continue
-        left = xs[a]
-        right = xs[a]
-        for j in range(a + 1, b):
-            left = min(left, xs[j])
-            right = max(right, xs[j])
-        c0 = max(_ceil(left - 0.5), 0)
-        c1 = min(_ceil(right - 0.5), w)
-        if c1 <= c0 or not _any_to_do(todo, r_lo + i, c0, c1):
-            continue
-        _sort_small(xs, a, b)
-        for j in range(a, b - 1, 2):
-            c0 = max(_ceil(xs[j] - 0.5), 0)
-            c1 = min(_ceil(xs[j + 1] - 0.5), w)
-            new += _mark_span(grid, pooled, k, targets, todo, r_lo + i, c0, c1)
+    if n * nv > 4 * crossings:  # many rows: every row's crossings at once
+        _, start, xs = _row_crossings(vx, vy, h)
+        for q in range(n):
+            i = rows[q] - r_lo
+            new += _mark_row(grid, pooled, k, targets, todo, rows[q], xs, start[i], start[i + 1])
+        return new
+    xs = np.empty(nv)  # a row crosses each edge at most once
+    for q in range(n):
+        r = rows[q]
+        m = 0
+        for e in range(nv):
+            f = e + 1 if e + 1 < nv else 0
+            if min(rc[e], rc[f]) <= r < max(rc[e], rc[f]):
+                xs[m] = vx[e] + (r + 0.5 - vy[e]) * ((vx[f] - vx[e]) / (vy[f] - vy[e]))
+                m += 1
+        new += _mark_row(grid, pooled, k, targets, todo, r, xs, 0, m)
     return new
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _mark_row(grid, pooled, k, targets, todo, r, xs, a, b):  # pragma: no cover - compiled
+    """Mark the spans of row ``r`` between its crossings ``xs[a:b]`` (sorted in place); the new ones."""
+    w = grid.shape[1]
+    _sort_small(xs, a, b)
+    new = 0
+    for j in range(a, b - 1, 2):
+        c0 = max(_ceil(xs[j] - 0.5), 0)
+        c1 = min(_ceil(xs[j + 1] - 0.5), w)
+        new += _mark_span(grid, pooled, k, targets, todo, r, c0, c1)
+    return new
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _outline_rows(vy, h):  # pragma: no cover - compiled
+    """Each vertex's first row whose centre is not below it, and the rows the outline spans.
+
+    Returns:
+        ``(rc, r_lo, n_rows)``: ``(N,)`` int64 rows of the vertices; the first row and the
+        number of rows between the lowest and highest vertex, clipped to an ``h``-row grid.
+    """
+    nv = vy.shape[0]
+    rc = np.empty(nv, dtype=np.int64)
+    lo, hi = h, 0
+    for v in range(nv):
+        rc[v] = _ceil(vy[v] - 0.5)
+        lo = min(lo, rc[v])
+        hi = max(hi, rc[v])
+    r_lo = max(lo, 0)
+    return rc, r_lo, max(min(hi, h) - r_lo, 0)
 
 
 @njit(cache=True, nogil=True)
@@ -272,15 +327,8 @@ def _row_crossings(vx, vy, h):  # pragma: no cover - compiled
         (columns, in edge order), for the rows between the outline's lowest and highest.
     """
     nv = vx.shape[0]
-    rc = np.empty(nv, dtype=np.int64)  # each vertex's first row whose centre is not below it
-    lo, hi = h, 0
-    for v in range(nv):
-        rc[v] = _ceil(vy[v] - 0.5)
-        lo = min(lo, rc[v])
-        hi = max(hi, rc[v])
-    r_lo = max(lo, 0)
-    r_hi = min(hi, h)
-    n_rows = max(r_hi - r_lo, 0)
+    rc, r_lo, n_rows = _outline_rows(vy, h)
+    r_hi = r_lo + n_rows
     start = np.zeros(n_rows + 1, dtype=np.int64)
     for e in range(nv):
         f = e + 1 if e + 1 < nv else 0

@@ -14,6 +14,7 @@ from realistic_indoor.sim._map_kernels import (
     TRUTH_REACHABLE,
     TRUTH_WALL,
     _fan_outline,
+    _mark_fan,
     _mark_spans,
     _polygon_spans,
     _walk_and_mark,
@@ -133,6 +134,38 @@ def test_robot_map__marks_what_the_whole_fan_and_every_beam_walk_mark(office, fo
         assert np.array_equal(robot_map._todo, todo)
         assert np.array_equal(robot_map.grid == MAPPED_FREE, grid == MAPPED_FREE)
     assert np.count_nonzero(grid == MAPPED_FREE) > 10_000
+
+
+@pytest.mark.parametrize("to_do_share", [0.002, 0.05, 1.0])
+def test_mark_fan__marks_what_the_plain_fill_of_every_row_marks(to_do_share):
+    # random fan outlines (a sensor and two ends per wedge) over cells still to do here and
+    # there: few rows qualify (each gathered on its own), many, or all (every row sorted at once)
+    rng = np.random.default_rng(7)
+    h, w = 90, 150
+    targets = np.full((h, w), TRUTH_REACHABLE, dtype=np.uint8)
+    for trial in range(40):
+        n = int(rng.integers(3, 40))
+        angles = np.sort(rng.uniform(0, 1.5 * math.pi, n)) + rng.uniform(0, 2 * math.pi)
+        ranges = rng.uniform(2, 70, n)
+        px, py = rng.uniform(-10, w + 10), rng.uniform(-10, h + 10)
+        t = np.minimum(ranges[:-1], ranges[1:])
+        ends_x = np.stack([px + t * np.cos(angles[:-1]), px + t * np.cos(angles[1:])], axis=1).ravel()
+        ends_y = np.stack([py + t * np.sin(angles[:-1]), py + t * np.sin(angles[1:])], axis=1).ravel()
+        vx, vy = np.concatenate([[px], ends_x]), np.concatenate([[py], ends_y])
+        still = rng.random((h, w)) < to_do_share
+        maps = [
+            (
+                np.zeros((h, w), np.uint8),
+                np.zeros((h // 2 + 1, w // 2 + 1), np.uint8),
+                todo_bits(np.where(still, TRUTH_REACHABLE, TRUTH_WALL).astype(np.uint8)),
+            )
+            for _ in range(2)
+        ]
+        got = _mark_fan(*maps[0][:2], 2, targets, maps[0][2], vx, vy)
+        want = _mark_spans(*maps[1][:2], 2, targets, maps[1][2], *_polygon_spans(vx, vy, h, w))
+        assert got == want, trial
+        for a, b in zip(maps[0], maps[1], strict=True):
+            assert np.array_equal(a, b), trial
 
 
 def test_batch__a_robot_reset_in_the_same_building_maps_as_on_its_first_episode(office):

@@ -168,6 +168,56 @@ def test_mark_fan__marks_what_the_plain_fill_of_every_row_marks(to_do_share):
             assert np.array_equal(a, b), trial
 
 
+def _cells_walked(px, py, dx, dy, t0, t1, h, w):
+    """The cells a ray crosses from ``t0`` to ``t1``, one boundary at a time (a row's on a tie)."""
+    x, y = px + t0 * dx, py + t0 * dy
+    c, r = math.floor(x), math.floor(y)
+    step_c, step_r = (1 if dx > 0 else -1), (1 if dy > 0 else -1)
+    t_dc = abs(1.0 / dx) if dx != 0.0 else 1e30
+    t_dr = abs(1.0 / dy) if dy != 0.0 else 1e30
+    t_c = t0 + ((c + 1 - x) if dx > 0 else (x - c)) * t_dc if dx != 0.0 else 1e30
+    t_r = t0 + ((r + 1 - y) if dy > 0 else (y - r)) * t_dr if dy != 0.0 else 1e30
+    cells = []
+    while 0 <= r < h and 0 <= c < w:
+        cells.append((r, c))
+        if min(t_c, t_r) >= t1:
+            break
+        if t_c < t_r:
+            c, t_c = c + step_c, t_c + t_dc
+        else:
+            r, t_r = r + step_r, t_r + t_dr
+    return cells
+
+
+def test_walk_and_mark__marks_the_cells_still_to_do_that_a_ray_crosses():
+    rng = np.random.default_rng(3)
+    h, w = 40, 150
+    targets = np.where(rng.random((h, w)) < 0.8, TRUTH_REACHABLE, TRUTH_FREE).astype(np.uint8)
+    directions = [0.0, math.pi / 2, math.pi, -math.pi / 2, math.pi / 4]  # along axes and diagonals too
+    for trial in range(400):
+        angle = directions[trial] if trial < len(directions) else rng.uniform(-math.pi, math.pi)
+        dx, dy = math.cos(angle), math.sin(angle)
+        px, py = rng.uniform(-5, w + 5), rng.uniform(-5, h + 5)
+        if trial % 3 == 0:  # on cell boundaries
+            px, py = float(round(px)), float(round(py))
+        t0 = rng.uniform(0, 20)
+        t1 = t0 + rng.choice([rng.uniform(0, 3), rng.uniform(0, 200)])
+        still = rng.random((h, w)) < 0.5
+        todo = todo_bits(np.where(still, targets, TRUTH_WALL).astype(np.uint8))
+        grid = np.zeros((h, w), np.uint8)
+        pooled = np.zeros((-(-h // 3), -(-w // 3)), np.uint8)
+        new = _walk_and_mark(grid, pooled, 3, targets, todo, px, py, dx, dy, t0, t1, h, w)
+        marked = [(r, c) for r, c in _cells_walked(px, py, dx, dy, t0, t1, h, w) if still[r, c]]
+        want = np.zeros((h, w), bool)
+        want[tuple(np.array(marked, dtype=int).reshape(-1, 2).T)] = True
+        assert np.array_equal(grid == MAPPED_FREE, want), trial
+        assert new == sum(targets[r, c] == TRUTH_REACHABLE for r, c in marked), trial
+        assert np.array_equal(todo, todo_bits(np.where(still & ~want, targets, TRUTH_WALL).astype(np.uint8)))
+        assert np.array_equal(
+            pooled > 0, np.add.reduceat(np.add.reduceat(want, range(0, h, 3), 0), range(0, w, 3), 1) > 0
+        )
+
+
 def test_batch__a_robot_reset_in_the_same_building_maps_as_on_its_first_episode(office):
     from realistic_indoor.envs.vector import BatchedExploreEnv
 

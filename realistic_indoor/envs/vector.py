@@ -148,7 +148,7 @@ class BatchedExploreEnv(VectorEnv):
         self._collisions = np.zeros(n, dtype=np.int64)
         self._autoreset = np.zeros(n, dtype=bool)
         self._rngs: list[np.random.Generator] = []
-        self._rng_list: Any = None  # the same generators in a numba typed List, for draw_noise
+        self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._slots: dict[str, np.ndarray] | None = None

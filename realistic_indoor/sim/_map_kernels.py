@@ -92,15 +92,6 @@ def integrate_scan(
     return new
 
 
-@njit(cache=True, nogil=True)
-def _mark_spans(grid, pooled, k, targets, todo, rows, c0, c1):  # pragma: no cover - compiled
-    """Mark free the cells still to do in the row spans ``[c0, c1)`` of ``rows``; the new reachable ones."""
-    new = 0
-    for i in range(rows.shape[0]):
-        new += _mark_span(grid, pooled, k, targets, todo, rows[i], c0[i], c1[i])
-    return new
-
-
 @njit(cache=True, nogil=True, inline="always")
 def _mark_span(grid, pooled, k, targets, todo, r, c, end):  # pragma: no cover - compiled
     """Mark free the cells still to do in columns ``[c, end)`` of row ``r``; the new reachable ones."""
@@ -231,12 +222,24 @@ def _fan_outline(px, py, dxs, dys, ts, closed):  # pragma: no cover - compiled
 def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - compiled
     """Mark free the cells still to do whose centre lies in the fan's outline; the new reachable ones.
 
-    The cells :func:`_polygon_spans` and :func:`_mark_spans` mark, found with less work: along
-    a drive only a few rows of a scan hold a cell still to do (about 3 of 300 rows of a default
-    office), so one pass over the outline keeps only each row's leftmost and rightmost
-    crossing, and a row's crossings are gathered, sorted and marked only when a cell between
-    those two is still to do: edge by edge for the rows of one edge when few rows qualify, by a
-    counting sort of every row's crossings when many do (a scan into unexplored floor).
+    A scanline fill that looks only at the rows it may mark: along a drive about 3 of some 300
+    rows of a scan hold a cell still to do. One pass over the outline keeps each row's leftmost
+    and rightmost crossing; a row's crossings are gathered, sorted and paired into spans only
+    when a cell between those two is still to do: edge by edge for each such row when they are
+    few, by one counting sort of every row's crossings (:func:`_row_crossings`) when many are
+    (a scan into unexplored floor).
+
+    Args:
+        grid: ``(H, W)`` uint8 map, marked :data:`MAPPED_FREE` where a cell is marked.
+        pooled: The pooled map (``k x k`` cells to a pixel), kept up to date.
+        k: Cells per side of a pooled cell.
+        targets: ``(H, W)`` uint8 ``TRUTH_*`` of each cell.
+        todo: The map's to-do bits, cleared for the cells marked.
+        vx: ``(N,)`` outline x (cells), in order around the fan.
+        vy: ``(N,)`` outline y (cells).
+
+    Returns:
+        The number of reachable cells marked.
     """
     h, w = grid.shape
     nv = vx.shape[0]
@@ -249,9 +252,9 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
         ra = max(min(rc[e], rc[f]), r_lo)
         rb = min(max(rc[e], rc[f]), r_lo + n_rows)
         if rb > ra:
-            slope = (vx[f] - vx[e]) / (vy[f] - vy[e])
+            slope = _slope(vx, vy, e, f)
             for r in range(ra, rb):
-                x = vx[e] + (r + 0.5 - vy[e]) * slope
+                x = _crossing(vx, vy, e, slope, r)
                 left[r - r_lo] = min(left[r - r_lo], x)
                 right[r - r_lo] = max(right[r - r_lo], x)
             crossings += rb - ra
@@ -264,7 +267,9 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
             rows[n] = r_lo + i
             n += 1
     new = 0
-    if n * nv > 4 * crossings:  # many rows: every row's crossings at once
+    # edge by edge costs a row nv tests, the counting sort every row about 4 operations per
+    # crossing (count, prefix, place, read): gather row by row while that is the cheaper
+    if n * nv > 4 * crossings:
         _, start, xs = _row_crossings(vx, vy, h)
         for q in range(n):
             i = rows[q] - r_lo
@@ -277,7 +282,7 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
         for e in range(nv):
             f = e + 1 if e + 1 < nv else 0
             if min(rc[e], rc[f]) <= r < max(rc[e], rc[f]):
-                xs[m] = vx[e] + (r + 0.5 - vy[e]) * ((vx[f] - vx[e]) / (vy[f] - vy[e]))
+                xs[m] = _crossing(vx, vy, e, _slope(vx, vy, e, f), r)
                 m += 1
         new += _mark_row(grid, pooled, k, targets, todo, r, xs, 0, m)
     return new
@@ -294,6 +299,21 @@ def _mark_row(grid, pooled, k, targets, todo, r, xs, a, b):  # pragma: no cover 
         c1 = min(_ceil(xs[j + 1] - 0.5), w)
         new += _mark_span(grid, pooled, k, targets, todo, r, c0, c1)
     return new
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _slope(vx, vy, e, f):  # pragma: no cover - compiled
+    """Columns per row along the outline's edge from vertex ``e`` to vertex ``f``."""
+    return (vx[f] - vx[e]) / (vy[f] - vy[e])
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _crossing(vx, vy, e, slope, r):  # pragma: no cover - compiled
+    """Where the edge from vertex ``e`` (of ``slope``) crosses row ``r``'s centre line (column).
+
+    The one formula of every crossing, so that the row tests and the spans agree to the bit.
+    """
+    return vx[e] + (r + 0.5 - vy[e]) * slope
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -343,40 +363,11 @@ def _row_crossings(vx, vy, h):  # pragma: no cover - compiled
         ra = max(min(rc[e], rc[f]), r_lo)
         rb = min(max(rc[e], rc[f]), r_hi)
         if rb > ra:
-            slope = (vx[f] - vx[e]) / (vy[f] - vy[e])
+            slope = _slope(vx, vy, e, f)
             for r in range(ra, rb):
-                xs[nxt[r - r_lo]] = vx[e] + (r + 0.5 - vy[e]) * slope
+                xs[nxt[r - r_lo]] = _crossing(vx, vy, e, slope, r)
                 nxt[r - r_lo] += 1
     return r_lo, start, xs
-
-
-@njit(cache=True, nogil=True)
-def _polygon_spans(vx, vy, h, w):  # pragma: no cover - compiled
-    """Row spans of the cells whose centre lies in a polygon, clipped to an ``h x w`` grid.
-
-    Scanline fill: each row's crossings (:func:`_row_crossings`), sorted, paired into spans.
-    With :func:`_mark_spans`, the plain fill that :func:`_mark_fan` is held to by the tests.
-    """
-    r_lo, start, xs = _row_crossings(vx, vy, h)
-    n_rows = start.shape[0] - 1
-    n_spans = start[n_rows] // 2
-    rows = np.empty(n_spans, dtype=np.int64)
-    c0 = np.empty(n_spans, dtype=np.int64)
-    c1 = np.empty(n_spans, dtype=np.int64)
-    s = 0
-    for i in range(n_rows):
-        a, b = start[i], start[i + 1]
-        if b - a == 2:  # most rows: one span
-            if xs[a] > xs[a + 1]:
-                xs[a], xs[a + 1] = xs[a + 1], xs[a]
-        else:
-            _sort_small(xs, a, b)
-        for j in range(a, b - 1, 2):
-            rows[s] = r_lo + i
-            c0[s] = max(_ceil(xs[j] - 0.5), 0)
-            c1[s] = min(_ceil(xs[j + 1] - 0.5), w)
-            s += 1
-    return rows[:s], c0[:s], c1[:s]
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -501,6 +492,8 @@ def _pixel(pooled, lut, x, y, unknown):  # pragma: no cover - compiled
 
     The cell's indices as unsigned integers: a negative one wraps to a huge one, so one
     comparison per axis tests both ends, and indexing needs no check for negative indices.
+    Coordinates must be finite (a pose's always are): the integer of a NaN or of a float beyond
+    the int64 range is the processor's choice.
     """
     c = np.uint64(np.int64(math.floor(x)))
     r = np.uint64(np.int64(math.floor(y)))

@@ -15,8 +15,7 @@ from realistic_indoor.sim._map_kernels import (
     TRUTH_WALL,
     _fan_outline,
     _mark_fan,
-    _mark_spans,
-    _polygon_spans,
+    _mark_span,
     _walk_and_mark,
     render_local,
     todo_bits,
@@ -53,7 +52,7 @@ def test_todo_bits__one_bit_per_free_cell_64_to_a_word():
     ("c0", "c1"),
     [(60, 70), (0, 64), (64, 128), (63, 64), (0, 200), (130, 131), (127, 129), (10, 63), (65, 127)],
 )
-def test_mark_spans__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
+def test_mark_span__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
     rng = np.random.default_rng(c0 * 1000 + c1)
     targets = rng.choice(
         np.array([TRUTH_WALL, TRUTH_OUTSIDE, TRUTH_FREE, TRUTH_REACHABLE], dtype=np.uint8), size=(3, 200)
@@ -66,8 +65,7 @@ def test_mark_spans__marks_exactly_the_free_unknown_cells_of_a_span(c0, c1):
     for c in np.flatnonzero(seen & (targets[1] >= TRUTH_FREE)):
         todo[1, c // 64] ^= np.int64(1) << np.int64(c % 64)
     pooled = np.zeros((1, 50), dtype=np.uint8)
-    rows, a, b = np.array([1]), np.array([c0]), np.array([c1])
-    new = _mark_spans(grid, pooled, 4, targets, todo, rows, a, b)
+    new = _mark_span(grid, pooled, 4, targets, todo, 1, c0, c1)
     in_span = (np.arange(200) >= c0) & (np.arange(200) < c1)
     marked = in_span & ~seen & (targets[1] >= TRUTH_FREE)
     assert np.array_equal(grid[1] == MAPPED_FREE, seen | marked)
@@ -99,10 +97,46 @@ def test_robot_map__todo_and_wall_bits_follow_the_map_along_a_drive(office):
     assert total == pytest.approx(np.count_nonzero(free_seen) * world.raster.resolution_m**2)
 
 
+def _fan_cells(vx, vy, h, w):
+    """The cells whose centre lies in a polygon, by the even-odd rule on each row's centre line.
+
+    A cell is in when an odd number of the row's crossings lie at or left of it (a crossing at
+    ``x`` is left of cell ``c`` when ``ceil(x - 0.5) <= c``), each crossing computed as the map
+    kernels compute it, so that the two agree to the bit also on cell boundaries.
+    """
+    rc = np.ceil(vy - 0.5).astype(np.int64)  # each vertex's first row whose centre is not below it
+    inside = np.zeros((h, w), dtype=bool)
+    columns = np.arange(w)
+    for e in range(len(vx)):
+        f = (e + 1) % len(vx)
+        rows = np.arange(max(min(rc[e], rc[f]), 0), min(max(rc[e], rc[f]), h))
+        if rows.size:
+            x = vx[e] + (rows + 0.5 - vy[e]) * ((vx[f] - vx[e]) / (vy[f] - vy[e]))
+            inside[rows] ^= np.ceil(x - 0.5)[:, None] <= columns[None, :]
+    return inside
+
+
+def _to_do(todo, w):
+    """The to-do bits as a bool ``(H, W)`` array."""
+    return np.unpackbits(todo.view(np.uint8), bitorder="little").reshape(len(todo), -1)[:, :w].astype(bool)
+
+
+def _mark_by_hand(grid, pooled, k, targets, todo, cells):
+    """Mark free the cells of ``cells`` still to do, as the kernels do; the new reachable ones."""
+    w = grid.shape[1]
+    marked = cells & _to_do(todo, w)
+    rows, cols = np.nonzero(marked)
+    grid[rows, cols] = MAPPED_FREE
+    unknown = pooled[rows // k, cols // k] == MAPPED_UNKNOWN
+    pooled[rows[unknown] // k, cols[unknown] // k] = MAPPED_FREE
+    todo[...] = todo_bits(np.where(_to_do(todo, w) & ~marked, TRUTH_FREE, TRUTH_WALL).astype(np.uint8))
+    return int(np.count_nonzero(marked & (targets == TRUTH_REACHABLE)))
+
+
 @pytest.mark.parametrize("fov_deg", [270.0, 360.0])
-def test_robot_map__marks_what_the_whole_fan_and_every_beam_walk_mark(office, fov_deg):
-    # the map update looks only at rows and beams near a cell still to do; the reference
-    # fills every row of the fan and walks every beam over a copy of the same map
+def test_robot_map__marks_the_fan_by_the_even_odd_rule_and_every_beam_walk(office, fov_deg):
+    # the map update looks only at the rows that may hold a cell still to do; the reference
+    # tests every cell of the map against the fan and walks every beam, over a copy of the map
     world = World(office)
     robot_map = RobotMap(world)
     lidar = Lidar(LidarConfig(fov_rad=math.radians(fov_deg), noise_std_m=0.0))
@@ -120,7 +154,7 @@ def test_robot_map__marks_what_the_whole_fan_and_every_beam_walk_mark(office, fo
         dys = math.sin(pose[2]) * robot_map._cos + math.cos(pose[2]) * robot_map._sin
         ts = scan.true.range_m.astype(np.float64) * (1.0 / res)  # as the kernel: float64 products
         vx, vy = _fan_outline(px, py, dxs, dys, ts, robot_map._closed)
-        want = _mark_spans(grid, pooled, k, targets, todo, *_polygon_spans(vx, vy, *grid.shape))
+        want = _mark_by_hand(grid, pooled, k, targets, todo, _fan_cells(vx, vy, *grid.shape))
         n = len(ts)
         for i in range(n):
             neighbours = (
@@ -133,17 +167,18 @@ def test_robot_map__marks_what_the_whole_fan_and_every_beam_walk_mark(office, fo
         assert new == want
         assert np.array_equal(robot_map._todo, todo)
         assert np.array_equal(robot_map.grid == MAPPED_FREE, grid == MAPPED_FREE)
+        assert np.array_equal(robot_map._pooled > MAPPED_UNKNOWN, pooled > MAPPED_UNKNOWN)
     assert np.count_nonzero(grid == MAPPED_FREE) > 10_000
 
 
 @pytest.mark.parametrize("to_do_share", [0.002, 0.05, 1.0])
-def test_mark_fan__marks_what_the_plain_fill_of_every_row_marks(to_do_share):
+def test_mark_fan__marks_the_cells_still_to_do_inside_by_the_even_odd_rule(to_do_share):
     # random fan outlines (a sensor and two ends per wedge) over cells still to do here and
     # there: few rows qualify (each gathered on its own), many, or all (every row sorted at once)
     rng = np.random.default_rng(7)
     h, w = 90, 150
-    targets = np.full((h, w), TRUTH_REACHABLE, dtype=np.uint8)
-    for trial in range(40):
+    targets = np.where(rng.random((h, w)) < 0.7, TRUTH_REACHABLE, TRUTH_FREE).astype(np.uint8)
+    for trial in range(60):
         n = int(rng.integers(3, 40))
         angles = np.sort(rng.uniform(0, 1.5 * math.pi, n)) + rng.uniform(0, 2 * math.pi)
         ranges = rng.uniform(2, 70, n)
@@ -152,20 +187,19 @@ def test_mark_fan__marks_what_the_plain_fill_of_every_row_marks(to_do_share):
         ends_x = np.stack([px + t * np.cos(angles[:-1]), px + t * np.cos(angles[1:])], axis=1).ravel()
         ends_y = np.stack([py + t * np.sin(angles[:-1]), py + t * np.sin(angles[1:])], axis=1).ravel()
         vx, vy = np.concatenate([[px], ends_x]), np.concatenate([[py], ends_y])
+        if trial % 3 == 0:  # vertices on row centres and cell edges
+            vx, vy = np.round(vx * 2) / 2, np.floor(vy) + 0.5
         still = rng.random((h, w)) < to_do_share
+        todo = todo_bits(np.where(still, targets, TRUTH_WALL).astype(np.uint8))
         maps = [
-            (
-                np.zeros((h, w), np.uint8),
-                np.zeros((h // 2 + 1, w // 2 + 1), np.uint8),
-                todo_bits(np.where(still, TRUTH_REACHABLE, TRUTH_WALL).astype(np.uint8)),
-            )
-            for _ in range(2)
+            (np.zeros((h, w), np.uint8), np.zeros((h // 2, w // 2), np.uint8), todo.copy()) for _ in range(2)
         ]
         got = _mark_fan(*maps[0][:2], 2, targets, maps[0][2], vx, vy)
-        want = _mark_spans(*maps[1][:2], 2, targets, maps[1][2], *_polygon_spans(vx, vy, h, w))
+        want = _mark_by_hand(*maps[1][:2], 2, targets, maps[1][2], _fan_cells(vx, vy, h, w))
         assert got == want, trial
         for a, b in zip(maps[0], maps[1], strict=True):
             assert np.array_equal(a, b), trial
+        assert want > 0 or to_do_share < 0.01 or not _fan_cells(vx, vy, h, w).any()
 
 
 def _cells_walked(px, py, dx, dy, t0, t1, h, w):
@@ -262,3 +296,37 @@ def test_render_local__a_pixel_on_the_far_edge_of_the_map_is_off_it():
     assert out[0, 0] == 0
     render_local(_POOLED, _GREY, -0.001, 0.5, 1.0, 0.0, 1.0, out)  # just before the first cell
     assert out[0, 0] == 128
+
+
+def _view_by_hand(pooled, px, py, cos_h, sin_h, step, size):
+    """The local view pixel by pixel: each row's start, then one pixel's step at a time."""
+    h, w = pooled.shape
+    half = (size - 1) / 2.0
+    col_dx, col_dy = step * sin_h, -step * cos_h
+    out = np.empty((size, size), dtype=np.uint8)
+    for i in range(size):
+        ahead = (half - i) * step
+        x = px + ahead * cos_h - half * col_dx
+        y = py + ahead * sin_h - half * col_dy
+        for j in range(size):
+            on_map = 0.0 <= x < w and 0.0 <= y < h
+            out[i, j] = _GREY[pooled[math.floor(y), math.floor(x)]] if on_map else _GREY[MAPPED_UNKNOWN]
+            x += col_dx
+            y += col_dy
+    return out
+
+
+def test_render_local__equals_the_view_sampled_pixel_by_pixel():
+    rng = np.random.default_rng(11)
+    pooled = rng.integers(0, 3, (13, 17)).astype(np.uint8)
+    for trial in range(300):
+        size = int(rng.integers(1, 10))
+        step = float(rng.choice([1.0, 0.5, rng.uniform(0.2, 3.0)]))
+        px, py = rng.uniform(-6, 23), rng.uniform(-6, 19)
+        if trial % 4 == 0:  # on cell edges, heading along an axis
+            px, py = float(round(px)), float(round(py))
+        theta = rng.choice([0.0, math.pi / 2, math.pi, rng.uniform(-math.pi, math.pi)])
+        out = np.empty((size, size), dtype=np.uint8)
+        render_local(pooled, _GREY, px, py, math.cos(theta), math.sin(theta), step, out)
+        want = _view_by_hand(pooled, px, py, math.cos(theta), math.sin(theta), step, size)
+        assert np.array_equal(out, want), trial

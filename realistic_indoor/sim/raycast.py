@@ -279,40 +279,77 @@ def _march(skip, px, py, dx, dy, t_max):  # pragma: no cover - compiled
 def _cast_fan(
     skip, px, py, cos_h, sin_h, cos_off, sin_off, t_max, res, out_range, out_kind
 ):  # pragma: no cover
-    """March a fan of rays in lockstep: each round advances every ray still going by one step.
+    """March a fan of rays four at a time, in lanes: each round advances each lane's ray one step.
 
-    Each ray's arithmetic is :func:`_march`'s, so the results are the same to the bit; marching
-    the rays side by side lets the processor overlap one ray's memory reads and branches with
-    the others' (half the time of marching them one after another, 64 robots or 4).
+    Each ray's arithmetic is :func:`_march`'s, so the results are the same to the bit. Marching
+    rays side by side lets the processor overlap one ray's memory reads and branches with the
+    others' (half the time of marching them one after another). The four lanes are written out
+    in local variables, a finished ray's lane taken over by the next ray: a fifth faster than
+    advancing every ray still going from an array (7.0 against 8.6 us a 109-beam scan), and
+    than the same lanes passed through a function as tuples (20 us).
     """
     n = cos_off.shape[0]
-    ray = np.empty((n, 5))  # dx, dy, 1 / dx, 1 / dy, t
-    going = np.empty(n, dtype=np.int64)
-    m = 0
+    ray = np.empty((n, 4))  # dx, dy, 1 / dx, 1 / dy
     for i in range(n):
-        dx, dy, inv_dx, inv_dy = _direction(
+        ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3] = _direction(
             cos_h * cos_off[i] - sin_h * sin_off[i], sin_h * cos_off[i] + cos_h * sin_off[i]
         )
-        ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3], ray[i, 4] = dx, dy, inv_dx, inv_dy, 0.0
-        if t_max > 0.0:  # every ray still going has t < t_max
-            going[m] = i
-            m += 1
-        else:  # as _march: no step at all
+    if not t_max > 0.0:  # as _march: no step at all
+        for i in range(n):
             out_range[i] = t_max * res
             out_kind[i] = RASTER_FREE
-    while m > 0:
-        still = 0
-        for a in range(m):
-            i = going[a]
-            t, kind = _advance(skip, px, py, ray[i, 4], ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3])
+        return
+    # a lane: its ray (-1 for none), t (< t_max while the ray goes on), dx, dy, 1 / dx, 1 / dy
+    i0, t0, dx0, dy0, u0, v0 = _lane(ray, 0)
+    i1, t1, dx1, dy1, u1, v1 = _lane(ray, 1)
+    i2, t2, dx2, dy2, u2, v2 = _lane(ray, 2)
+    i3, t3, dx3, dy3, u3, v3 = _lane(ray, 3)
+    nxt = 4
+    while i0 >= 0 or i1 >= 0 or i2 >= 0 or i3 >= 0:
+        if i0 >= 0:
+            t, kind = _advance(skip, px, py, t0, dx0, dy0, u0, v0)
             if kind == RASTER_FREE and t < t_max:
-                ray[i, 4] = t
-                going[still] = i
-                still += 1
+                t0 = t
             else:
-                out_range[i] = min(t, t_max) * res
-                out_kind[i] = kind
-        m = still
+                out_range[i0] = min(t, t_max) * res
+                out_kind[i0] = kind
+                i0, t0, dx0, dy0, u0, v0 = _lane(ray, nxt)
+                nxt += 1
+        if i1 >= 0:
+            t, kind = _advance(skip, px, py, t1, dx1, dy1, u1, v1)
+            if kind == RASTER_FREE and t < t_max:
+                t1 = t
+            else:
+                out_range[i1] = min(t, t_max) * res
+                out_kind[i1] = kind
+                i1, t1, dx1, dy1, u1, v1 = _lane(ray, nxt)
+                nxt += 1
+        if i2 >= 0:
+            t, kind = _advance(skip, px, py, t2, dx2, dy2, u2, v2)
+            if kind == RASTER_FREE and t < t_max:
+                t2 = t
+            else:
+                out_range[i2] = min(t, t_max) * res
+                out_kind[i2] = kind
+                i2, t2, dx2, dy2, u2, v2 = _lane(ray, nxt)
+                nxt += 1
+        if i3 >= 0:
+            t, kind = _advance(skip, px, py, t3, dx3, dy3, u3, v3)
+            if kind == RASTER_FREE and t < t_max:
+                t3 = t
+            else:
+                out_range[i3] = min(t, t_max) * res
+                out_kind[i3] = kind
+                i3, t3, dx3, dy3, u3, v3 = _lane(ray, nxt)
+                nxt += 1
+
+
+@njit(cache=True, nogil=True, fastmath=True, inline="always")
+def _lane(ray, i):  # pragma: no cover - compiled
+    """A lane holding ray ``i`` at its start (``t`` = 0), or an empty one (ray -1) past the last."""
+    if i < ray.shape[0]:
+        return i, 0.0, ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3]
+    return -1, 0.0, 0.0, 0.0, 0.0, 0.0
 
 
 @njit(cache=True, nogil=True, fastmath=True)

@@ -161,3 +161,27 @@ def test_raycaster__a_fan_marched_in_lockstep_equals_its_rays_marched_one_by_one
             t, kind = _march(raycaster._skip, px, py, dx[i], dy[i], t_max)
             assert hits.kind[i] == kind
             assert hits.range_m[i] == np.float32(min(t, t_max) * RES)
+
+
+@pytest.mark.parametrize("n_rays", [1, 2, 3, 4, 5, 9])
+def test_raycaster__fans_of_fewer_rays_than_lanes_and_a_few_more_equal_their_rays_marched_alone(
+    office, rng, n_rays
+):
+    from realistic_indoor.sim.raycast import _march
+
+    raycaster = Raycaster(rasterize(office, RES, THICKNESS))
+    free = np.argwhere(raycaster.raster.grid == RASTER_FREE)
+    for _ in range(20):
+        r, c = free[rng.integers(len(free))]
+        x, y = raycaster.raster.cell_to_world(r, c)
+        angles = rng.uniform(-math.pi, math.pi, n_rays)
+        max_range = float(rng.choice([MAX_RANGE, 0.3]))  # the short range ends rays in free floor
+        hits = raycaster.cast((x, y), angles, max_range)
+        px = (x - raycaster._x0) * raycaster._scale
+        py = (y - raycaster._y0) * raycaster._scale
+        t_max = max_range / RES
+        dx, dy = np.cos(angles), np.sin(angles)  # the directions cast() gives the fan
+        for i in range(n_rays):
+            t, kind = _march(raycaster._skip, px, py, dx[i], dy[i], t_max)
+            assert hits.kind[i] == kind
+            assert hits.range_m[i] == np.float32(min(t, t_max) * RES)

@@ -248,9 +248,7 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
     right = np.full(n_rows, -np.inf)
     crossings = 0
     for e in range(nv):
-        f = e + 1 if e + 1 < nv else 0
-        ra = max(min(rc[e], rc[f]), r_lo)
-        rb = min(max(rc[e], rc[f]), r_lo + n_rows)
+        f, ra, rb = _edge_rows(rc, e, r_lo, r_lo + n_rows)
         if rb > ra:
             slope = _slope(vx, vy, e, f)
             for r in range(ra, rb):
@@ -261,8 +259,10 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
     rows = np.empty(n_rows, dtype=np.int64)  # the rows with a cell still to do between their ends
     n = 0
     for i in range(n_rows):
-        c0 = max(_ceil(left[i] - 0.5), 0) if left[i] <= right[i] else w
-        c1 = min(_ceil(right[i] - 0.5), w) if left[i] <= right[i] else 0
+        if left[i] > right[i]:  # no crossing
+            continue
+        c0 = max(_ceil(left[i] - 0.5), 0)
+        c1 = min(_ceil(right[i] - 0.5), w)
         if c1 > c0 and _any_to_do(todo, r_lo + i, c0, c1):
             rows[n] = r_lo + i
             n += 1
@@ -280,8 +280,8 @@ def _mark_fan(grid, pooled, k, targets, todo, vx, vy):  # pragma: no cover - com
         r = rows[q]
         m = 0
         for e in range(nv):
-            f = e + 1 if e + 1 < nv else 0
-            if min(rc[e], rc[f]) <= r < max(rc[e], rc[f]):
+            f, ra, rb = _edge_rows(rc, e, r_lo, r_lo + n_rows)
+            if ra <= r < rb:
                 xs[m] = _crossing(vx, vy, e, _slope(vx, vy, e, f), r)
                 m += 1
         new += _mark_row(grid, pooled, k, targets, todo, r, xs, 0, m)
@@ -299,6 +299,16 @@ def _mark_row(grid, pooled, k, targets, todo, r, xs, a, b):  # pragma: no cover 
         c1 = min(_ceil(xs[j + 1] - 0.5), w)
         new += _mark_span(grid, pooled, k, targets, todo, r, c0, c1)
     return new
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _edge_rows(rc, e, r_lo, r_hi):  # pragma: no cover - compiled
+    """The outline's edge from vertex ``e``: its end vertex and the rows ``[ra, rb)`` it crosses.
+
+    ``rc`` are the vertices' rows (:func:`_outline_rows`); rows are clipped to ``[r_lo, r_hi)``.
+    """
+    f = e + 1 if e + 1 < rc.shape[0] else 0
+    return f, max(min(rc[e], rc[f]), r_lo), min(max(rc[e], rc[f]), r_hi)
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -351,17 +361,15 @@ def _row_crossings(vx, vy, h):  # pragma: no cover - compiled
     r_hi = r_lo + n_rows
     start = np.zeros(n_rows + 1, dtype=np.int64)
     for e in range(nv):
-        f = e + 1 if e + 1 < nv else 0
-        for r in range(max(min(rc[e], rc[f]), r_lo), min(max(rc[e], rc[f]), r_hi)):
+        _, ra, rb = _edge_rows(rc, e, r_lo, r_hi)
+        for r in range(ra, rb):
             start[r - r_lo + 1] += 1
     for i in range(n_rows):
         start[i + 1] += start[i]
     nxt = start[:-1].copy()
     xs = np.empty(start[n_rows])
     for e in range(nv):
-        f = e + 1 if e + 1 < nv else 0
-        ra = max(min(rc[e], rc[f]), r_lo)
-        rb = min(max(rc[e], rc[f]), r_hi)
+        f, ra, rb = _edge_rows(rc, e, r_lo, r_hi)
         if rb > ra:
             slope = _slope(vx, vy, e, f)
             for r in range(ra, rb):

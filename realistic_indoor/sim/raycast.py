@@ -289,7 +289,8 @@ def _cast_fan(
     and returned from a function as one tuple made it 20 us.)
     """
     n = cos_off.shape[0]
-    ray = np.empty((n, 4))  # dx, dy, 1 / dx, 1 / dy
+    # each ray's dx, dy, 1 / dx, 1 / dy, before the march (computed as a lane takes the ray: 7.3 us)
+    ray = np.empty((n, 4))
     for i in range(n):
         ray[i, 0], ray[i, 1], ray[i, 2], ray[i, 3] = _direction(
             cos_h * cos_off[i] - sin_h * sin_off[i], sin_h * cos_off[i] + cos_h * sin_off[i]

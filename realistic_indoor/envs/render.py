@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -13,7 +15,18 @@ if TYPE_CHECKING:
     from realistic_indoor.envs.simulation import Simulation
     from realistic_indoor.sim.raster import OccupancyRaster
 
-__all__ = ["COLOURS", "MAX_SIDE_PX", "ViewFrame", "map_image", "plan_image", "scan_end_points", "top_view"]
+__all__ = [
+    "COLOURS",
+    "MAX_SIDE_PX",
+    "Scene",
+    "ViewFrame",
+    "draw",
+    "map_image",
+    "plan_image",
+    "scan_end_points",
+    "tile",
+    "top_view",
+]
 
 MAX_SIDE_PX = 1024
 """Longest side of a rendered image (pixels); larger rasters are pooled by a whole factor."""
@@ -39,15 +52,41 @@ _MAP_RANK = np.array([0, 1, 2], dtype=np.uint8)  # MAPPED_UNKNOWN, MAPPED_FREE, 
 _VICTIM_HALF_M = 0.2
 
 
+@dataclass(frozen=True)
+class Scene:
+    """What a top view shows of one robot's episode (world units: metres, radians).
+
+    Attributes:
+        raster: The world's raster.
+        map_grid: ``(H, W)`` uint8 the robot's map (``MAPPED_*`` states) on the raster's cells.
+        trajectory_xy: ``(T, 2)`` positions (m), the start first.
+        pose: The robot's ``(x, y, heading)`` (m, m, rad).
+        scan_pose: Where the latest scan was taken, ``(x, y, heading)``.
+        scan_ranges_m: ``(n_beams,)`` the latest scan's readings (m).
+        scan_offsets_rad: ``(n_beams,)`` beam directions relative to the heading (rad).
+        scan_returned: ``(n_beams,)`` bool, the beams that returned from a wall.
+        radius_m: The robot's radius (m).
+        victims_xy: ``(N, 2)`` victim positions (m), or ``None``.
+        victims_found: ``(N,)`` bool, which victims have been found, or ``None``.
+    """
+
+    raster: OccupancyRaster
+    map_grid: np.ndarray
+    trajectory_xy: np.ndarray
+    pose: tuple[float, float, float]
+    scan_pose: tuple[float, float, float]
+    scan_ranges_m: np.ndarray
+    scan_offsets_rad: np.ndarray
+    scan_returned: np.ndarray
+    radius_m: float
+    victims_xy: np.ndarray | None = None
+    victims_found: np.ndarray | None = None
+
+
 def top_view(
     sim: Simulation, victims_xy: np.ndarray | None = None, victims_found: np.ndarray | None = None
 ) -> np.ndarray:
-    """Draw the plan, the robot's map, the trajectory, the latest scan, victims and the robot.
-
-    North (+y) is up. Unseen floor is light grey, walls dark grey; what the robot has mapped is
-    light blue (floor) and dark blue (walls); the trajectory is orange, the beams green with red
-    returns, victims red squares (green once found), the robot a blue disc with a white
-    heading line.
+    """The top view (:func:`draw`) of a single environment's episode.
 
     Args:
         sim: The episode's simulation (after a reset).
@@ -55,20 +94,74 @@ def top_view(
         victims_found: ``(N,)`` bool, which victims have been found.
 
     Returns:
+        An ``(H, W, 3)`` uint8 image (:func:`draw`).
+    """
+    scene = Scene(
+        raster=sim.world.raster,
+        map_grid=sim.map.grid,
+        trajectory_xy=np.asarray(sim.trajectory),
+        pose=sim.robot.pose,
+        scan_pose=sim.scan.pose,
+        scan_ranges_m=sim.scan.ranges_m,
+        scan_offsets_rad=sim.lidar.offsets_rad,
+        scan_returned=sim.scan.returned,
+        radius_m=sim.config.robot.radius_m,
+        victims_xy=victims_xy,
+        victims_found=victims_found,
+    )
+    return draw(scene)
+
+
+def draw(scene: Scene) -> np.ndarray:
+    """Draw the plan, the robot's map, the trajectory, the latest scan, victims and the robot.
+
+    North (+y) is up. Unseen floor is light grey, walls dark grey; what the robot has mapped is
+    light blue (floor) and dark blue (walls); the trajectory is orange, the beams green with red
+    returns, victims red squares (green once found), the robot a blue disc with a white
+    heading line.
+
+    Returns:
         An ``(H, W, 3)`` uint8 image, one pixel per raster cell (fewer when the raster is
         larger than :data:`MAX_SIDE_PX`). Cost: a few milliseconds for a 2,000 m2 office.
     """
-    frame = ViewFrame(sim.world.raster)
-    image = plan_image(frame, sim.world.raster.grid)
-    mapped = frame.pool(_MAP_RANK[sim.map.grid])
+    frame = ViewFrame(scene.raster)
+    image = plan_image(frame, scene.raster.grid)
+    mapped = frame.pool(_MAP_RANK[scene.map_grid])
     image[mapped == _MAP_RANK[MAPPED_FREE]] = COLOURS["mapped_floor"]
     image[mapped == _MAP_RANK[MAPPED_OCCUPIED]] = COLOURS["mapped_wall"]
-    _draw_trajectory(image, frame, np.asarray(sim.trajectory))
-    _draw_scan(image, frame, sim)
-    if victims_xy is not None and len(victims_xy):
-        _draw_victims(image, frame, np.asarray(victims_xy), victims_found)
-    _draw_robot(image, frame, sim.robot.pose, sim.config.robot.radius_m)
+    _draw_trajectory(image, frame, np.asarray(scene.trajectory_xy))
+    _draw_scan(image, frame, scene)
+    if scene.victims_xy is not None and len(scene.victims_xy):
+        _draw_victims(image, frame, np.asarray(scene.victims_xy), scene.victims_found)
+    _draw_robot(image, frame, scene.pose, scene.radius_m)
     return image
+
+
+def tile(frames: Sequence[np.ndarray], gap_px: int = 4) -> np.ndarray:
+    """Frames of any sizes side by side in one image, in rows of ``ceil(sqrt(n))``.
+
+    Each frame sits at the top left of a cell as large as the largest frame; what a frame does
+    not cover, and a gap of ``gap_px`` between cells, is white (:data:`COLOURS` ``"outside"``).
+
+    Args:
+        frames: ``(H_i, W_i, 3)`` uint8 images, at least one.
+        gap_px: Pixels between neighbouring cells.
+
+    Returns:
+        ``(rows * (H + gap) - gap, cols * (W + gap) - gap, 3)`` uint8, ``H`` and ``W`` the
+        largest height and width, frame ``i`` in row ``i // cols`` and column ``i % cols``.
+    """
+    n = len(frames)
+    cols = math.ceil(math.sqrt(n))
+    rows = -(-n // cols)
+    h = max(f.shape[0] for f in frames)
+    w = max(f.shape[1] for f in frames)
+    out = np.empty((rows * (h + gap_px) - gap_px, cols * (w + gap_px) - gap_px, 3), dtype=np.uint8)
+    out[...] = COLOURS["outside"]
+    for i, f in enumerate(frames):
+        top, left = (i // cols) * (h + gap_px), (i % cols) * (w + gap_px)
+        out[top : top + f.shape[0], left : left + f.shape[1]] = f
+    return out
 
 
 class ViewFrame:
@@ -147,17 +240,21 @@ def _draw_trajectory(image: np.ndarray, frame: ViewFrame, xy: np.ndarray) -> Non
 
 def scan_end_points(sim: Simulation) -> np.ndarray:
     """``(n_beams, 2)`` world points (m) where the latest scan's beams end."""
-    x, y, theta = sim.scan.pose
-    angles = theta + sim.lidar.offsets_rad
-    r = sim.scan.ranges_m.astype(float)
+    return _beam_ends(sim.scan.pose, sim.scan.ranges_m, sim.lidar.offsets_rad)
+
+
+def _beam_ends(pose: tuple[float, float, float], ranges_m: np.ndarray, offsets_rad: np.ndarray) -> np.ndarray:
+    x, y, theta = pose
+    angles = theta + offsets_rad
+    r = ranges_m.astype(float)
     return np.stack([x + r * np.cos(angles), y + r * np.sin(angles)], axis=1)
 
 
-def _draw_scan(image: np.ndarray, frame: ViewFrame, sim: Simulation) -> None:
-    centre = frame.rc(np.array(sim.scan.pose[:2]))
-    tips = frame.rc(scan_end_points(sim))
+def _draw_scan(image: np.ndarray, frame: ViewFrame, scene: Scene) -> None:
+    centre = frame.rc(np.array(scene.scan_pose[:2]))
+    tips = frame.rc(_beam_ends(scene.scan_pose, scene.scan_ranges_m, scene.scan_offsets_rad))
     _draw_segments(image, np.repeat(centre, len(tips), axis=0), tips, COLOURS["ray"])
-    _put(image, tips[sim.scan.returned], COLOURS["hit"])
+    _put(image, tips[scene.scan_returned], COLOURS["hit"])
 
 
 def _draw_disc(image: np.ndarray, centre: np.ndarray, radius_px: float, colour: tuple[int, int, int]) -> None:

@@ -23,6 +23,7 @@ from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.rewards import weighted_sum
+from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
@@ -70,6 +71,9 @@ class BatchedExploreEnv(VectorEnv):
     - **Seeds**: ``reset(seed=s)`` seeds sub-environment ``k`` with ``s + k`` (or ``seed`` as a
       list, one per sub-environment); sub-environment ``k`` then draws the same building and the
       same laser noise as ``ExploreEnv`` reset with that seed.
+    - **Rendering**: ``render_mode="rgb_array"`` makes :meth:`render` return a tuple of frames,
+      sub-environment ``k``'s being ``ExploreEnv``'s top view of the same episode (its own
+      building's size); ``"human"`` shows them side by side in one pygame window.
 
     Args:
         num_envs: Number of sub-environments (robots).
@@ -77,13 +81,14 @@ class BatchedExploreEnv(VectorEnv):
         max_episode_steps: The registered step limit; sets ``max_steps`` when given.
         preset: A registered id whose configuration is the base when ``config`` is not given
             (``gym.make_vec`` passes it).
+        render_mode: ``None``, ``"rgb_array"`` or ``"human"`` (see Rendering above).
         **overrides: Fields of :class:`~realistic_indoor.envs.config.EnvConfig`.
 
     Raises:
-        ConfigError: For a bad configuration or ``num_envs`` below 1.
+        ConfigError: For a bad configuration or render mode, or ``num_envs`` below 1.
     """
 
-    metadata = {"render_modes": [], "autoreset_mode": AutoresetMode.NEXT_STEP}
+    metadata = {"render_modes": list(RENDER_MODES), "autoreset_mode": AutoresetMode.NEXT_STEP}
     task = "explore"
     """The task whose configuration fields apply (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
     term_names: tuple[str, ...] = ("new_area", "collision", "time")
@@ -95,9 +100,11 @@ class BatchedExploreEnv(VectorEnv):
         config: EnvConfig | None = None,
         max_episode_steps: int | None = None,
         preset: str | None = None,
+        render_mode: str | None = None,
         **overrides: Any,
     ) -> None:
         require_int("BatchedExploreEnv", "num_envs", num_envs, 1)
+        require_render_mode(render_mode)
         num_envs = int(num_envs)
         if max_episode_steps is not None:
             overrides = {"max_steps": max_episode_steps, **overrides}
@@ -109,7 +116,8 @@ class BatchedExploreEnv(VectorEnv):
                 f"{self.config.robot.physics!r}; use gym.make_vec(..., vectorization_mode='sync') for pymunk"
             )
         self.num_envs = num_envs
-        self.render_mode = None
+        self.render_mode = render_mode
+        self.metadata = {**self.metadata, "render_fps": self.config.robot.control_hz}
         self._source = self.config.source.generator()
         self._actions = ActionMap(
             self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
@@ -152,6 +160,7 @@ class BatchedExploreEnv(VectorEnv):
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._slots: dict[str, np.ndarray] | None = None
+        self._views = None if self.render_mode is None else SubEnvViews(n, c.lidar, c.robot.radius_m)
 
     # -- the Gymnasium API ----------------------------------------------------------------------
     def reset(
@@ -178,6 +187,8 @@ class BatchedExploreEnv(VectorEnv):
             self._reset_one(k)
         self._run()
         self._autoreset[:] = False
+        if self.render_mode == "human":
+            self.render()
         return self._observe(), self._info(rewards=False)
 
     def step(
@@ -198,6 +209,8 @@ class BatchedExploreEnv(VectorEnv):
                 self._reset_one(int(k))
         self._run()
         stepped = self._mode == STEP
+        if self._views is not None:
+            self._views.moved(stepped, self._batch.phys[:, [X, Y]])
         self._sense(stepped)
         self._steps += stepped
         self._path += self._motion * stepped
@@ -208,7 +221,45 @@ class BatchedExploreEnv(VectorEnv):
         truncated = stepped & (self._steps >= self.config.max_steps)  # also when terminated, as TimeLimit
         self._autoreset = terminated | truncated
         info = self._info(rewards=True)
+        if self.render_mode == "human":
+            self.render()
         return self._observe(), reward, terminated, truncated, info
+
+    def render(self) -> tuple[np.ndarray, ...] | None:
+        """Top views of the sub-environments' episodes (as the single environment draws them).
+
+        Returns:
+            With ``render_mode="rgb_array"``, one ``(H, W, 3)`` uint8 frame per sub-environment,
+            each of its own building's size; with ``"human"``, ``None``, the frames being shown
+            side by side in a pygame window (``reset`` and ``step`` call this themselves).
+
+        Raises:
+            ResetNeeded: Before the first :meth:`reset` (or after :meth:`close`).
+            DependencyNotInstalled: If ``render_mode="human"`` and pygame is not installed
+                (``pip install "realistic-indoor[viz]"``).
+        """
+        if self._views is None:
+            gym.logger.warn('render() needs a render mode: gym.make_vec(..., render_mode="rgb_array")')
+            return None
+        if not self._rngs:
+            raise gym.error.ResetNeeded("call reset() before render()")
+        b = self._batch
+        frames = tuple(
+            self._views.frame(
+                k,
+                b.worlds[b.robot_building[k]],
+                b.grids[k],
+                self._pose(k),
+                self._scan_m[k],
+                self._victims_of(k),
+            )
+            for k in range(self.num_envs)
+        )
+        if self.render_mode == "rgb_array":
+            return frames
+        title = f"realistic-indoor: {self.spec.id if self.spec else type(self).__name__} x {self.num_envs}"
+        self._views.show(frames, title, self.metadata["render_fps"])
+        return None
 
     def restart(self, indices: np.ndarray) -> dict[str, np.ndarray]:
         """Start new episodes now in some sub-environments (same-step autoreset, as SB3 wants).
@@ -245,7 +296,9 @@ class BatchedExploreEnv(VectorEnv):
         return self._observe()
 
     def close_extras(self, **kwargs: Any) -> None:
-        """Free the worlds; a later step or restart asks for a reset first."""
+        """Free the worlds and close the window; a later step or restart asks for a reset first."""
+        if self._views is not None:
+            self._views.close()
         self._batch = Batch(self.num_envs)
         self._slots = None
         self._rngs = []
@@ -279,6 +332,10 @@ class BatchedExploreEnv(VectorEnv):
         """``(num_envs,)`` whether each sub-environment's task is complete."""
         return self._coverage() >= self.config.coverage_target
 
+    def _victims_of(self, k: int) -> tuple[np.ndarray, np.ndarray] | None:
+        """Sub-environment ``k``'s victim positions and found flags, drawn by :meth:`render`."""
+        return None
+
     # -- internals -----------------------------------------------------------------------------------
     def _seeds(self, seed: int | list[int | None] | None) -> list[int | None] | None:
         if seed is None:
@@ -304,6 +361,8 @@ class BatchedExploreEnv(VectorEnv):
             world = World(building, self.config.world)
             batch.load(k, world, self._params[0], self._pool)
         batch.reset_robot(k)
+        if self._views is not None:
+            self._views.start(k, (float(batch.phys[k, X]), float(batch.phys[k, Y])))
         self._slots = None  # its building's start and floor may have changed
         self._steps[k] = 0
         self._path[k] = 0.0
@@ -342,6 +401,11 @@ class BatchedExploreEnv(VectorEnv):
             self._params, self._cos, self._sin, self._noise, self._lidar, self._local,
             self._scan_m, self._local_map, self._terms, self._motion,
         )  # fmt: skip
+
+    def _pose(self, k: int) -> tuple[float, float, float]:
+        """Sub-environment ``k``'s robot pose ``(x m, y m, heading rad)``."""
+        phys = self._batch.phys
+        return (float(phys[k, X]), float(phys[k, Y]), float(phys[k, THETA]))
 
     def _command_batch(self, actions: Any) -> np.ndarray:
         """``(num_envs, 2)`` velocity commands (m/s, rad/s) of a batch of actions."""

@@ -15,7 +15,6 @@ import numpy as np
 from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.search import VictimObservation
 from realistic_indoor.envs.vector import BatchedExploreEnv
-from realistic_indoor.sim.disc_physics import THETA, X, Y
 from realistic_indoor.sim.victims import Victims, place_victims
 
 __all__ = ["BatchedSearchEnv"]
@@ -36,6 +35,8 @@ class BatchedSearchEnv(BatchedExploreEnv):
         config: The configuration (as :class:`SearchEnv`); ``None`` for the preset's.
         max_episode_steps: The registered step limit; sets ``max_steps`` when given.
         preset: A registered id whose configuration is the base when ``config`` is not given.
+        render_mode: ``None``, ``"rgb_array"`` or ``"human"`` (as the exploration one's; victims
+            drawn as ``SearchEnv`` draws them).
         **overrides: Fields of :class:`~realistic_indoor.envs.config.EnvConfig`.
     """
 
@@ -43,8 +44,8 @@ class BatchedSearchEnv(BatchedExploreEnv):
     term_names = ("new_area", "collision", "time", "victim")
 
     def __init__(self, num_envs: int = 1, config: Any = None, max_episode_steps: int | None = None,
-                 preset: str | None = None, **overrides: Any) -> None:  # fmt: skip
-        super().__init__(num_envs, config, max_episode_steps, preset, **overrides)
+                 preset: str | None = None, render_mode: str | None = None, **overrides: Any) -> None:  # fmt: skip
+        super().__init__(num_envs, config, max_episode_steps, preset, render_mode, **overrides)
         self._victims = [Victims(self.config.victims) for _ in range(num_envs)]
         self._victim_view = VictimObservation(self.config)
 
@@ -86,6 +87,6 @@ class BatchedSearchEnv(BatchedExploreEnv):
         info["_victims_found"] = info["_victims_total"] = mask
         return info
 
-    def _pose(self, k: int) -> tuple[float, float, float]:
-        phys = self._batch.phys
-        return (float(phys[k, X]), float(phys[k, Y]), float(phys[k, THETA]))
+    def _victims_of(self, k: int) -> tuple[np.ndarray, np.ndarray]:
+        v = self._victims[k]
+        return v.xy.copy(), v.found.copy()

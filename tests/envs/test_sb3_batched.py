@@ -12,6 +12,7 @@ pytest.importorskip("stable_baselines3")
 from realistic_indoor.agents.rl import ppo_preset
 from realistic_indoor.agents.rl.batched_vec_env import BatchedVecEnv
 from realistic_indoor.agents.rl.envs import make_vec_env
+from realistic_indoor.envs.render import tile
 
 KEYS = ("scan", "local_map", "velocity")
 
@@ -38,6 +39,27 @@ def test_batched_vec_env__resets_in_the_same_step_with_terminal_observation_and_
     assert (obs["velocity"] == 0).all()  # the new episodes' first observations: at rest
     obs, _, done, infos = venv.step(np.array([1, 1, 1]))
     assert not done.any() and all("episode" not in i for i in infos)  # no second reset next step
+
+
+def test_batched_vec_env__renders_every_sub_env_in_its_numbering():
+    groups = [
+        gym.make_vec(env_id, num_envs=n, area_m2=300.0, render_mode="rgb_array")
+        for env_id, n in (("OfficeExplore-v0", 2), ("HouseExplore-v0", 1))
+    ]
+    venv = BatchedVecEnv(groups, KEYS, order=[0, 2, 1])  # office, house, office
+    assert venv.render_mode == "rgb_array"
+    venv.seed(5)
+    venv.reset()
+    venv.step(np.zeros((3, 2), np.float32))
+    images = venv.get_images()
+    office, house = groups[0].render(), groups[1].render()
+    for got, want in zip(images, [office[0], house[0], office[1]], strict=True):
+        np.testing.assert_array_equal(got, want)
+    np.testing.assert_array_equal(venv.render(), tile(images))
+    with pytest.warns(UserWarning, match='render_mode="human"'):
+        assert venv.render("human") is None
+    with pytest.warns(UserWarning, match="no `render_mode`"):
+        assert _venv().render() is None  # SB3's own answer
 
 
 def test_batched_vec_env__refuses_an_order_that_is_no_permutation():

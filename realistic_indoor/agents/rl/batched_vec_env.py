@@ -13,6 +13,7 @@ sub-environment's ``info`` also holds what the single environment's does (``cove
 from __future__ import annotations
 
 import time
+import warnings
 from collections.abc import Sequence
 from typing import Any
 
@@ -148,8 +149,44 @@ class BatchedVecEnv(VecEnv):
         for g in self.groups:
             g.close()
 
+    def get_images(self) -> list[np.ndarray | None]:
+        """Each sub-environment's top view, in this ``VecEnv``'s numbering.
+
+        The groups must be made with ``render_mode="rgb_array"`` (``None`` entries otherwise);
+        each frame has its own building's size.
+        """
+        frames: list[np.ndarray | None] = []
+        for g in self.groups:
+            drawn = g.render() if g.render_mode == "rgb_array" else None
+            frames.extend(drawn if drawn is not None else [None] * g.num_envs)
+        return [frames[i] for i in self._order]
+
+    def render(self, mode: str | None = None) -> np.ndarray | None:
+        """The sub-environments' top views side by side (SB3's ``render``, for ``VecVideoRecorder``).
+
+        With ``render_mode="rgb_array"`` groups, one image of every frame
+        (:func:`~realistic_indoor.envs.render.tile`: SB3's own tiling takes frames of one size
+        only, and each building has its own); with ``"human"`` groups, each group shows its
+        window (``mode="human"`` on ``"rgb_array"`` groups warns: make them ``"human"``);
+        otherwise SB3's answer (a warning, ``None``).
+        """
+        if self.render_mode == "rgb_array" and mode in (None, "rgb_array"):
+            from realistic_indoor.envs.render import tile
+
+            return tile(self.get_images())
+        if self.render_mode == "human" and mode in (None, "human"):
+            for g in self.groups:
+                g.render()
+            return None
+        if self.render_mode == "rgb_array" and mode == "human":
+            warnings.warn(
+                'to watch the sub-environments, make the vector envs with render_mode="human"', stacklevel=2
+            )
+            return None
+        return super().render(mode)
+
     def get_attr(self, attr_name: str, indices: VecEnvIndices = None) -> list[Any]:
-        """The attribute of each sub-environment's group (``render_mode`` is ``None``)."""
+        """The attribute of each sub-environment's group (``render_mode``, say)."""
         return [getattr(self._group_of(int(self._order[i])), attr_name) for i in self._get_indices(indices)]
 
     def set_attr(self, attr_name: str, value: Any, indices: VecEnvIndices = None) -> None:

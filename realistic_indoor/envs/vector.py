@@ -166,27 +166,37 @@ class BatchedExploreEnv(VectorEnv):
     def reset(
         self, *, seed: int | list[int | None] | None = None, options: dict[str, Any] | None = None
     ) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
-        """Start an episode in every sub-environment, each in a new building.
+        """Start an episode in every sub-environment (or those of a mask), each in a new building.
 
         Args:
             seed: ``s`` seeds sub-environment ``k`` with ``s + k``; a list gives one seed each
                 (``None`` entries draw fresh entropy); ``None`` keeps the generators (fresh ones
-                on the first reset).
-            options: Not used (``None``).
+                on the first reset). With a mask, only the masked sub-environments are seeded.
+            options: ``None``, or ``{"reset_mask": m}`` with ``m`` a ``(num_envs,)`` bool array
+                with at least one ``True``: only those sub-environments start a new episode
+                (Gymnasium's partial reset); the others keep their state and last observation.
 
         Returns:
             The batched first observations and ``info`` (arrays).
+
+        Raises:
+            ConfigError: For bad seeds, an option other than ``reset_mask`` or a bad mask.
+            ResetNeeded: For a mask before the first full reset.
         """
         seeds = self._seeds(seed)
-        if seeds is not None or not self._rngs:
-            seeds = seeds or [None] * self.num_envs
-            self._rngs = [np.random.default_rng(s) for s in seeds]
+        mask = self._reset_mask(options)
+        if not self._rngs:
+            if not mask.all():
+                raise gym.error.ResetNeeded(
+                    "the first reset() starts every sub-environment: drop the reset_mask"
+                )
+            self._rngs = [np.random.default_rng(s) for s in seeds or [None] * self.num_envs]
             self._rng_list = List(self._rngs)
-        self._mode[:] = RESET
-        for k in range(self.num_envs):
-            self._reset_one(k)
-        self._run()
-        self._autoreset[:] = False
+        elif seeds is not None:
+            for k in np.flatnonzero(mask):
+                self._rngs[k] = np.random.default_rng(seeds[k])
+            self._rng_list = List(self._rngs)
+        self._start(mask)
         if self.render_mode == "human":
             self.render()
         return self._observe(), self._info(rewards=False)
@@ -287,12 +297,9 @@ class BatchedExploreEnv(VectorEnv):
             raise ConfigError(
                 f"restart() takes sub-environment indices in 0..{self.num_envs - 1}, got {indices!r}"
             )
-        self._mode[:] = SKIP
-        for k in chosen.astype(np.int64):
-            self._mode[k] = RESET
-            self._reset_one(int(k))
-            self._autoreset[k] = False
-        self._run()
+        mask = np.zeros(self.num_envs, dtype=bool)
+        mask[chosen.astype(np.int64)] = True
+        self._start(mask)
         return self._observe()
 
     def close_extras(self, **kwargs: Any) -> None:
@@ -337,6 +344,33 @@ class BatchedExploreEnv(VectorEnv):
         return None
 
     # -- internals -----------------------------------------------------------------------------------
+    def _start(self, mask: np.ndarray) -> None:
+        """Start new episodes in the sub-environments of ``mask``, cancelling their pending autoresets."""
+        self._mode[:] = np.where(mask, RESET, SKIP)
+        for k in np.flatnonzero(mask):
+            self._reset_one(int(k))
+        self._autoreset[mask] = False
+        if mask.any():
+            self._run()
+
+    def _reset_mask(self, options: dict[str, Any] | None) -> np.ndarray:
+        """The sub-environments a reset starts: ``options["reset_mask"]``, checked, or all."""
+        options = options or {}
+        unknown = sorted(set(options) - {"reset_mask"})
+        if unknown:
+            raise ConfigError(f"reset() takes the option 'reset_mask' only, got {unknown[0]!r}")
+        if "reset_mask" not in options:
+            return np.ones(self.num_envs, dtype=bool)
+        mask = options["reset_mask"]
+        if not (isinstance(mask, np.ndarray) and mask.dtype == np.bool_ and mask.shape == (self.num_envs,)):
+            raise ConfigError(
+                f"options['reset_mask'] must be a ({self.num_envs},) bool array, got {type(mask).__name__} "
+                f"{getattr(mask, 'dtype', '')} {getattr(mask, 'shape', '')}"
+            )
+        if not mask.any():
+            raise ConfigError("options['reset_mask'] selects no sub-environment: set at least one True")
+        return mask
+
     def _seeds(self, seed: int | list[int | None] | None) -> list[int | None] | None:
         if seed is None:
             return None

@@ -234,3 +234,35 @@ def test_vector_env__refuses_bad_restarts_seeds_and_use_after_close():
     with pytest.raises(gym.error.ResetNeeded):
         envs.step(np.zeros((2, 2), np.float32))
     assert gym.make_vec("OfficeExplore-v0", num_envs=np.int64(2), area_m2=300.0).num_envs == 2
+
+
+def test_vector_env__reset_mask_starts_only_the_masked_sub_envs_as_the_single_env_would():
+    envs = _make(n=3)
+    obs, _ = envs.reset(seed=0)
+    actions = np.tile(np.array([1.0, 0.2], np.float32), (3, 1))
+    for _ in range(4):
+        before, *_ = envs.step(actions)
+    obs, info = envs.reset(seed=10, options={"reset_mask": np.array([False, True, False])})
+    single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"])
+    first, _ = single.reset(seed=11)  # sub-env 1 seeded with 10 + 1
+    assert data_equivalence(first, {k: v[1] for k, v in obs.items()}, exact=True)
+    assert info["path_length_m"][1] == 0.0 and info["path_length_m"][0] > 0.0
+    for k in (0, 2):  # the others keep their state and last observation
+        assert data_equivalence(
+            {n: v[k] for n, v in before.items()}, {n: v[k] for n, v in obs.items()}, exact=True
+        )
+    obs, *_ = envs.step(actions)
+    one, *_ = single.step(actions[1])
+    assert data_equivalence(one, {k: v[1] for k, v in obs.items()}, exact=True)
+
+
+def test_vector_env__refuses_bad_reset_options():
+    envs = _make(n=2)
+    with pytest.raises(gym.error.ResetNeeded, match="reset_mask"):
+        envs.reset(options={"reset_mask": np.array([True, False])})
+    envs.reset(seed=0)
+    for bad in ([True, False], np.array([1, 0]), np.array([True]), np.array([False, False])):
+        with pytest.raises(ConfigError, match="reset_mask"):
+            envs.reset(options={"reset_mask": bad})
+    with pytest.raises(ConfigError, match="'building'"):
+        envs.reset(options={"building": None})

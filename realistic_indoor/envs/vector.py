@@ -311,6 +311,16 @@ class BatchedExploreEnv(VectorEnv):
         self._rngs = []
         self._rng_list = None
 
+    def __getstate__(self) -> dict[str, Any]:
+        """The state to pickle (``pickle``, ``copy.deepcopy``): the typed list of generators left out."""
+        return {**self.__dict__, "_rng_list": None}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        """Restore a pickled state: the copy goes on exactly as the original would."""
+        self.__dict__.update(state)
+        if self._rngs:
+            self._rng_list = List(self._rngs)
+
     # -- state a user may inspect --------------------------------------------------------------------
     @property
     def buildings(self) -> list[Any]:

@@ -52,6 +52,10 @@ class SubEnvViews:
         self._radius_m = radius_m
         self._window = None
 
+    def __getstate__(self) -> dict:
+        """The state to pickle: all but the window (a copy opens its own when it shows frames)."""
+        return {**self.__dict__, "_window": None}
+
     def start(self, k: int, xy: tuple[float, float]) -> None:
         """Sub-environment ``k`` starts an episode at ``xy`` (m)."""
         self._trajectories[k] = [xy]

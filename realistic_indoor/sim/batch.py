@@ -16,6 +16,7 @@ tolerance ``tests/sim/test_disc_physics.py`` states.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numba import njit, prange
@@ -117,6 +118,22 @@ class Batch:
         self.phys[i, X], self.phys[i, Y] = meta[4], meta[5]
         self.phys[i, THETA] = math.remainder(meta[6], math.tau)
 
+    def __getstate__(self) -> dict[str, Any]:
+        """The state to pickle: numba's typed lists as plain lists (they do not pickle)."""
+        state = {**self.__dict__, "skips": None}  # each world's raycaster holds its skip field
+        for name in _TYPED_LISTS[1:]:
+            state[name] = list(state[name])
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        """Rebuild the typed lists; the skip fields are the (unpickled) worlds' own again."""
+        frozen = np.zeros((1, 1), dtype=np.uint8)
+        frozen.setflags(write=False)
+        state["skips"] = [frozen if w is None else w.raycaster._skip for w in state["worlds"]]
+        for name in _TYPED_LISTS:
+            state[name] = List(state[name])
+        self.__dict__.update(state)
+
     @property
     def nbytes(self) -> int:
         """Memory held by the batch's arrays and its worlds (bytes)."""
@@ -126,6 +143,11 @@ class Batch:
         worlds = sum(w.nbytes for w in self.worlds if w is not None)
         return total + worlds + self.phys.nbytes
 
+
+_TYPED_LISTS = (
+    "skips", "targets", "segments", "seg_start", "seg_items", "seg_origin", "grids", "pooled", "todo", "walls",
+)  # fmt: skip
+"""The :class:`Batch` attributes held in numba typed lists."""
 
 LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 """Local view grey level of each map cell state."""

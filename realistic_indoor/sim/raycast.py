@@ -79,6 +79,11 @@ class Raycaster:
         self._scale = 1.0 / raster.resolution_m
         self._x0, self._y0 = raster.origin
 
+    def __setstate__(self, state: dict) -> None:
+        """Restore a pickled raycaster; its skip field read-only again (pickle drops the flag)."""
+        self.__dict__.update(state)
+        self._skip.setflags(write=False)
+
     @property
     def nbytes(self) -> int:
         """Memory held by the raycaster's skip field (bytes): one byte per cell."""

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import copy
+import pickle
+
 import gymnasium as gym
 import numpy as np
 import pytest
@@ -266,3 +269,20 @@ def test_vector_env__refuses_bad_reset_options():
             envs.reset(options={"reset_mask": bad})
     with pytest.raises(ConfigError, match="'building'"):
         envs.reset(options={"building": None})
+
+
+@pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
+def test_vector_env__a_pickled_or_deep_copied_env_goes_on_as_the_original(env_id):
+    envs = _make(env_id, n=2, max_steps=20)
+    envs.reset(seed=4)
+    actions = np.random.default_rng(2).uniform(-1, 1, (60, 2, 2)).astype(np.float32)
+    for a in actions[:7]:
+        envs.step(a)
+    copies = [pickle.loads(pickle.dumps(envs)), copy.deepcopy(envs)]
+    batch = copies[0].unwrapped._batch
+    assert batch.skips[0] is batch.worlds[0].raycaster._skip  # one skip field per world, read-only
+    assert not batch.skips[0].flags.writeable
+    for a in actions[7:]:  # two autoresets each: the buildings drawn from the copied generators
+        out = envs.step(a)
+        for twin in copies:
+            assert data_equivalence(out, twin.step(a), exact=True)

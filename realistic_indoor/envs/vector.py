@@ -19,14 +19,14 @@ from gymnasium.vector.utils import batch_space
 from numba.typed import List
 
 from realistic_indoor.checks import require_int
+from realistic_indoor.envs._vector_kernels import account, observe
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
-from realistic_indoor.envs.rewards import weighted_sum
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
-from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, drive_params
+from realistic_indoor.sim.disc_physics import THETA, X, Y, drive_params
 from realistic_indoor.sim.lidar import beam_offsets, draw_noise
 from realistic_indoor.sim.mapping import beam_table
 from realistic_indoor.sim.world import World
@@ -159,6 +159,7 @@ class BatchedExploreEnv(VectorEnv):
         self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
+        self._weights = np.array([float(getattr(c.rewards, name)) for name in self.term_names])
         self._slots: dict[str, np.ndarray] | None = None
         self._views = None if self.render_mode is None else SubEnvViews(n, c.lidar, c.robot.radius_m)
 
@@ -199,7 +200,7 @@ class BatchedExploreEnv(VectorEnv):
         self._start(mask)
         if self.render_mode == "human":
             self.render()
-        return self._observe(), self._info(rewards=False)
+        return self._observe(), self._info(self._account(np.zeros(self.num_envs, dtype=bool)), rewards=False)
 
     def step(
         self, actions: np.ndarray
@@ -222,15 +223,11 @@ class BatchedExploreEnv(VectorEnv):
         if self._views is not None:
             self._views.moved(stepped, self._batch.phys[:, [X, Y]])
         self._sense(stepped)
-        self._steps += stepped
-        self._path += self._motion * stepped
-        self._collisions += (self._terms[:, 1] > 0) & stepped
-        terms = {name: self._terms[:, j] for j, name in enumerate(self.term_names)}
-        reward = np.where(stepped, weighted_sum(self.config.rewards, terms), 0.0)
-        terminated = stepped & self._done()
-        truncated = stepped & (self._steps >= self.config.max_steps)  # also when terminated, as TimeLimit
+        progress = self._account(stepped)
+        reward, truncated, coverage = progress[0], progress[1], progress[2]
+        terminated = stepped & self._done(coverage)  # truncated also when terminated, as TimeLimit
         self._autoreset = terminated | truncated
-        info = self._info(rewards=True)
+        info = self._info(progress)
         if self.render_mode == "human":
             self.render()
         return self._observe(), reward, terminated, truncated, info
@@ -345,9 +342,9 @@ class BatchedExploreEnv(VectorEnv):
     def _sense(self, stepped: np.ndarray) -> None:
         """After the compiled step: what the task senses in Python (nothing for exploration)."""
 
-    def _done(self) -> np.ndarray:
-        """``(num_envs,)`` whether each sub-environment's task is complete."""
-        return self._coverage() >= self.config.coverage_target
+    def _done(self, coverage: np.ndarray) -> np.ndarray:
+        """``(num_envs,)`` whether each sub-environment's task is complete, given its coverage."""
+        return coverage >= self.config.coverage_target
 
     def _victims_of(self, k: int) -> tuple[np.ndarray, np.ndarray] | None:
         """Sub-environment ``k``'s victim positions and found flags, drawn by :meth:`render`."""
@@ -491,35 +488,30 @@ class BatchedExploreEnv(VectorEnv):
             }
         return self._slots
 
-    def _coverage(self) -> np.ndarray:
-        reachable = self._slot_arrays()["reachable"]
-        return np.where(reachable > 0, self._batch.observed / np.maximum(reachable, 1.0), 1.0)
+    def _account(self, stepped: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Count the step of the sub-environments ``stepped``: :func:`~._vector_kernels.account`'s arrays."""
+        slots = self._slot_arrays()
+        return account(
+            stepped, self._terms, self._weights, self._motion, self._batch.observed, slots["reachable"],
+            slots["cell_m2"], self.config.max_steps, self._steps, self._path, self._collisions,
+        )  # fmt: skip
 
     def _observe(self) -> dict[str, np.ndarray]:
-        phys = self._batch.phys
         start = self._slot_arrays()
-        dx, dy = phys[:, X] - start["x"], phys[:, Y] - start["y"]
-        cos0, sin0 = start["cos"], start["sin"]
-        pose = np.empty((self.num_envs, 3), dtype=np.float32)  # float64 values cast on assignment
-        pose[:, 0] = np.minimum(np.maximum(cos0 * dx + sin0 * dy, -POSE_LIMIT_M), POSE_LIMIT_M)
-        pose[:, 1] = np.minimum(np.maximum(-sin0 * dx + cos0 * dy, -POSE_LIMIT_M), POSE_LIMIT_M)
-        pose[:, 2] = np.remainder(phys[:, THETA] - start["heading"] + np.pi, 2 * np.pi) - np.pi
-        velocity = np.minimum(np.maximum(phys[:, [V, W]], -self._vw_limits), self._vw_limits)
-        scan = np.minimum(self._scan_m * self._scan_scale, np.float32(1.0))
-        return {
-            "scan": scan,
-            "local_map": self._local_map.copy(),
-            "velocity": velocity.astype(np.float32),
-            "pose": pose,
-        }
+        scan, local_map, velocity, pose = observe(
+            self._batch.phys, start["x"], start["y"], start["heading"], start["cos"], start["sin"],
+            self._vw_limits, POSE_LIMIT_M, self._scan_m, self._scan_scale, self._local_map,
+        )  # fmt: skip
+        return {"scan": scan, "local_map": local_map, "velocity": velocity, "pose": pose}
 
-    def _info(self, rewards: bool) -> dict[str, Any]:
-        res2 = self._slot_arrays()["cell_m2"]
+    def _info(self, progress: tuple[np.ndarray, ...], rewards: bool = True) -> dict[str, Any]:
+        """``info`` from :meth:`_account`'s arrays; with ``rewards``, the step's reward terms too."""
+        _, _, coverage, observed_m2, path, collisions, by_term = progress
         values = {
-            "coverage": self._coverage(),
-            "observed_area_m2": self._batch.observed * res2,
-            "path_length_m": self._path.copy(),
-            "collisions": self._collisions.copy(),
+            "coverage": coverage,
+            "observed_area_m2": observed_m2,
+            "path_length_m": path,
+            "collisions": collisions,
         }
         mask = np.ones(self.num_envs, dtype=bool)
         info: dict[str, Any] = {}
@@ -527,6 +519,6 @@ class BatchedExploreEnv(VectorEnv):
             info[key] = value
             info[f"_{key}"] = mask
         if rewards:
-            info["rewards"] = {name: self._terms[:, j].copy() for j, name in enumerate(self.term_names)}
+            info["rewards"] = dict(zip(self.term_names, by_term, strict=True))
             info["_rewards"] = mask
         return info

@@ -69,7 +69,7 @@ class BatchedSearchEnv(BatchedExploreEnv):
             world = self._batch.worlds[self._batch.robot_building[k]]
             self._terms[k, 3] = self._victims[k].look(world.raycaster, self._pose(int(k)))
 
-    def _done(self) -> np.ndarray:
+    def _done(self, coverage: np.ndarray) -> np.ndarray:
         return np.array([v.found.all() for v in self._victims])
 
     def _observe(self) -> dict[str, np.ndarray]:
@@ -79,8 +79,8 @@ class BatchedSearchEnv(BatchedExploreEnv):
         )
         return obs
 
-    def _info(self, rewards: bool) -> dict[str, Any]:
-        info = super()._info(rewards)
+    def _info(self, progress: tuple[np.ndarray, ...], rewards: bool = True) -> dict[str, Any]:
+        info = super()._info(progress, rewards)
         mask = np.ones(self.num_envs, dtype=bool)
         info["victims_found"] = np.array([int(v.found.sum()) for v in self._victims])
         info["victims_total"] = np.array([len(v.found) for v in self._victims])

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields
 from typing import Any
 
@@ -11,7 +11,7 @@ import numpy as np
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["RewardWeights", "reward_terms", "weighted_sum"]
+__all__ = ["RewardWeights", "reward_terms", "term_weights", "weighted_sum"]
 
 
 @dataclass(frozen=True)
@@ -58,8 +58,14 @@ def reward_terms(new_area_m2: float, collided: bool, victims_found: int | None =
 def weighted_sum(weights: RewardWeights, terms: Mapping[str, Any]) -> Any:
     """The reward: the sum of each term times its weight, in the order of ``terms``.
 
-    Terms that are floats give a float; terms that are arrays (one value per sub-environment of
-    a vector environment) give an array, summed in the same order, hence the same values.
+    Terms that are floats give a float; terms that are arrays give an array, summed in the same
+    order, hence the same values. The native vector environment sums :func:`term_weights` in
+    this order in compiled code (``envs/_vector_kernels.py``: ``account``).
     """
     total = sum(getattr(weights, name) * value for name, value in terms.items())
     return float(total) if np.ndim(total) == 0 else total
+
+
+def term_weights(weights: RewardWeights, names: Sequence[str]) -> np.ndarray:
+    """``(len(names),)`` float64 weights of the terms ``names``, in that order (for compiled sums)."""
+    return np.array([float(getattr(weights, name)) for name in names])

@@ -23,6 +23,7 @@ from realistic_indoor.envs._vector_kernels import account, observe
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
+from realistic_indoor.envs.rewards import term_weights
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
@@ -159,7 +160,7 @@ class BatchedExploreEnv(VectorEnv):
         self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
-        self._weights = np.array([float(getattr(c.rewards, name)) for name in self.term_names])
+        self._weights = term_weights(c.rewards, self.term_names)
         self._slots: dict[str, np.ndarray] | None = None
         self._views = None if self.render_mode is None else SubEnvViews(n, c.lidar, c.robot.radius_m)
 

@@ -22,10 +22,10 @@ import numpy as np
 from numba import njit, prange
 from numba.typed import List
 
-from realistic_indoor.sim._map_kernels import integrate_scan, render_local, todo_bits, wall_bits
+from realistic_indoor.sim._map_kernels import integrate_scan, render_local
 from realistic_indoor.sim.disc_physics import STATE_SIZE, THETA, X, Y, drive, segment_grid
 from realistic_indoor.sim.lidar import _readings
-from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, _targets
+from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, MapBits, _targets
 from realistic_indoor.sim.raycast import _cast_fan
 from realistic_indoor.sim.world import World
 
@@ -70,10 +70,9 @@ class Batch:
         self.seg_origin = List([np.array([0.0, 0.0, 1.0, 1.0, 1.0])] * n)
         self.grids = List([empty2] * n)
         self.pooled = List([empty2] * n)
-        self.todo = List([np.zeros((1, 1), dtype=np.int64)] * n)
-        self.todo_at_start = [np.zeros((1, 1), dtype=np.int64)] * n
-        self.walls = List([np.zeros((1, 1), dtype=np.int64)] * n)
-        self.walls_at_start = [np.zeros((1, 1), dtype=np.int64)] * n
+        self.bits: list[MapBits | None] = [None] * n
+        self.todo = List([np.zeros((1, 1), dtype=np.int64)] * n)  # each robot's bits.todo
+        self.walls = List([np.zeros((1, 1), dtype=np.int64)] * n)  # each robot's bits.walls
 
     def load(self, slot: int, world: World, reach_m: float, pool: int) -> None:
         """Make ``world`` the building of ``slot`` and give robot ``slot`` an empty map of it.
@@ -97,10 +96,9 @@ class Batch:
         h, w = raster.shape
         self.grids[slot] = np.zeros((h, w), dtype=np.uint8)
         self.pooled[slot] = np.zeros((-(-h // pool), -(-w // pool)), dtype=np.uint8)
-        self.todo_at_start[slot] = todo_bits(targets)
-        self.todo[slot] = self.todo_at_start[slot].copy()
-        self.walls_at_start[slot] = wall_bits(targets)
-        self.walls[slot] = self.walls_at_start[slot].copy()
+        bits = self.bits[slot] = MapBits(targets)
+        self.todo[slot] = bits.todo
+        self.walls[slot] = bits.walls
         x0, y0 = raster.origin
         start = world.start_pose
         reachable = float(np.count_nonzero(world.reachable))
@@ -110,8 +108,7 @@ class Batch:
         """Put robot ``i`` at rest at its building's start pose, with an empty map."""
         self.grids[i].fill(0)
         self.pooled[i].fill(0)
-        self.todo[i][...] = self.todo_at_start[i]
-        self.walls[i][...] = self.walls_at_start[i]
+        self.bits[i].reset()
         self.observed[i] = 0
         self.phys[i] = 0.0
         meta = self.building_meta[self.robot_building[i]]
@@ -137,9 +134,9 @@ class Batch:
     @property
     def nbytes(self) -> int:
         """Memory held by the batch's arrays and its worlds (bytes)."""
-        lists = (self.targets, self.grids, self.pooled, self.todo, self.walls, self.segments, self.seg_items)
-        lists += (self.todo_at_start, self.walls_at_start)
+        lists = (self.targets, self.grids, self.pooled, self.segments, self.seg_items)
         total = sum(int(a.nbytes) for lst in lists for a in lst)
+        total += sum(b.nbytes for b in self.bits if b is not None)
         worlds = sum(w.nbytes for w in self.worlds if w is not None)
         return total + worlds + self.phys.nbytes
 

@@ -23,8 +23,7 @@ from realistic_indoor.sim._map_kernels import (
     integrate_scan,
     map_targets,
     render_local,
-    todo_bits,
-    wall_bits,
+    start_bits,
 )
 from realistic_indoor.sim.raster import RASTER_FREE
 
@@ -41,12 +40,42 @@ __all__ = [
     "PIXEL_UNKNOWN",
     "FreeSpaceMarker",
     "LocalMapConfig",
+    "MapBits",
     "RobotMap",
     "beam_table",
 ]
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
 """Grey levels of the local map image: walls black, free floor white, unknown grey."""
+
+
+class MapBits:
+    """A map's to-do and wall bits, and those of the empty map it starts again from.
+
+    Args:
+        targets: ``(H, W)`` uint8 what a beam may mark in each cell (``TRUTH_*``).
+
+    Attributes:
+        todo: The free cells still unknown (:func:`~realistic_indoor.sim._map_kernels.todo_bits`),
+            cleared as the map marks them.
+        walls: The wall cells not yet marked
+            (:func:`~realistic_indoor.sim._map_kernels.wall_bits`), cleared likewise.
+    """
+
+    def __init__(self, targets: np.ndarray) -> None:
+        self._todo_at_start, self._walls_at_start = start_bits(targets)
+        self.todo = self._todo_at_start.copy()
+        self.walls = self._walls_at_start.copy()
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held by the bits (bytes)."""
+        return 2 * (self.todo.nbytes + self.walls.nbytes)
+
+    def reset(self) -> None:
+        """Back to the empty map's bits, in place (the arrays stay the same objects)."""
+        self.todo[...] = self._todo_at_start
+        self.walls[...] = self._walls_at_start
 
 
 @dataclass(frozen=True)
@@ -94,10 +123,7 @@ class RobotMap:
         self._res = world.raster.resolution_m
         self._x0, self._y0 = world.raster.origin
         self._targets = _targets(world)
-        self._todo_at_start = todo_bits(self._targets)
-        self._todo = self._todo_at_start.copy()
-        self._walls_at_start = wall_bits(self._targets)
-        self._walls = self._walls_at_start.copy()
+        self._bits = MapBits(self._targets)
         self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
         self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
         h, w = world.raster.shape
@@ -132,23 +158,14 @@ class RobotMap:
     @property
     def nbytes(self) -> int:
         """Memory held by the map (bytes)."""
-        arrays = (
-            self._grid,
-            self._pooled,
-            self._targets,
-            self._todo,
-            self._todo_at_start,
-            self._walls,
-            self._walls_at_start,
-        )
-        return int(sum(a.nbytes for a in arrays))
+        arrays = (self._grid, self._pooled, self._targets)
+        return int(sum(a.nbytes for a in arrays)) + self._bits.nbytes
 
     def reset(self) -> None:
         """Forget everything: every cell unknown, coverage 0."""
         self._grid.fill(MAPPED_UNKNOWN)
         self._pooled.fill(MAPPED_UNKNOWN)
-        self._todo[...] = self._todo_at_start
-        self._walls[...] = self._walls_at_start
+        self._bits.reset()
         self._observed = 0
 
     def update(self, scan: Scan) -> float:
@@ -170,8 +187,8 @@ class RobotMap:
             self._pooled,
             self._pool,
             self._targets,
-            self._todo,
-            self._walls,
+            self._bits.todo,
+            self._bits.walls,
             (x - self._x0) / self._res,
             (y - self._y0) / self._res,
             math.cos(theta),
@@ -262,9 +279,7 @@ class FreeSpaceMarker:
         self._cos, self._sin, self._closed = beam_table(offsets)
         self._kind = np.full(len(offsets), RASTER_FREE, dtype=np.uint8)  # no beam marks a wall
         self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
-        self._todo_at_start = todo_bits(self._targets)
-        self._todo = self._todo_at_start.copy()
-        self._walls = np.zeros_like(self._todo)  # no cell is a wall
+        self._bits = MapBits(self._targets)  # no cell is a wall
         self._grid = np.zeros(self.shape, dtype=np.uint8)
         self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here
         self._pooled = np.zeros((1, 1), dtype=np.uint8)
@@ -283,7 +298,7 @@ class FreeSpaceMarker:
             1 ns per cell of the fan, as :meth:`RobotMap.update`.
         """
         self._grid.fill(MAPPED_UNKNOWN)
-        self._todo[...] = self._todo_at_start
+        self._bits.reset()
         x, y, theta = pose
         res = self.resolution_m
         integrate_scan(
@@ -291,8 +306,8 @@ class FreeSpaceMarker:
             self._pooled,
             self._pool,
             self._targets,
-            self._todo,
-            self._walls,
+            self._bits.todo,
+            self._bits.walls,
             x / res,
             y / res,
             math.cos(theta),

@@ -87,10 +87,10 @@ def test_robot_map__todo_and_wall_bits_follow_the_map_along_a_drive(office):
         total += robot_map.update(lidar.scan(world.raycaster, pose))
         still = (robot_map.grid == MAPPED_UNKNOWN) & (robot_map._targets >= TRUTH_FREE)
         expected = todo_bits(np.where(still, TRUTH_FREE, TRUTH_WALL).astype(np.uint8))
-        assert np.array_equal(robot_map._todo, expected)
+        assert np.array_equal(robot_map._bits.todo, expected)
         unmarked = (robot_map.grid != MAPPED_OCCUPIED) & (robot_map._targets == TRUTH_WALL)
         assert np.array_equal(
-            robot_map._walls, wall_bits(np.where(unmarked, TRUTH_WALL, TRUTH_FREE).astype(np.uint8))
+            robot_map._bits.walls, wall_bits(np.where(unmarked, TRUTH_WALL, TRUTH_FREE).astype(np.uint8))
         )
     assert np.count_nonzero(robot_map.grid == MAPPED_OCCUPIED) > 100
     free_seen = (robot_map.grid == MAPPED_FREE) & world.reachable
@@ -142,7 +142,7 @@ def test_robot_map__marks_the_fan_by_the_even_odd_rule_and_every_beam_walk(offic
     lidar = Lidar(LidarConfig(fov_rad=math.radians(fov_deg), noise_std_m=0.0))
     grid = robot_map._grid.copy()
     pooled = robot_map._pooled.copy()
-    todo = robot_map._todo.copy()
+    todo = robot_map._bits.todo.copy()
     targets, k, res = robot_map._targets, robot_map._pool, world.raster.resolution_m
     x, y, theta = world.start_pose
     for step in range(60):
@@ -165,7 +165,7 @@ def test_robot_map__marks_the_fan_by_the_even_odd_rule_and_every_beam_walk(offic
                 grid, pooled, k, targets, todo, px, py, dxs[i], dys[i], t0, ts[i], *grid.shape
             )
         assert new == want
-        assert np.array_equal(robot_map._todo, todo)
+        assert np.array_equal(robot_map._bits.todo, todo)
         assert np.array_equal(robot_map.grid == MAPPED_FREE, grid == MAPPED_FREE)
         assert np.array_equal(robot_map._pooled > MAPPED_UNKNOWN, pooled > MAPPED_UNKNOWN)
     assert np.count_nonzero(grid == MAPPED_FREE) > 10_000

@@ -36,6 +36,7 @@ __all__ = ["INFO_KEYS", "ROBOTS_PER_THREAD", "BatchedExploreEnv", "step_threads"
 
 INFO_KEYS = ("coverage", "observed_area_m2", "path_length_m", "collisions")
 """Arrays of ``info`` after every step and reset (with Gymnasium's ``_key`` masks)."""
+_INT64_MAX = int(np.iinfo(np.int64).max)
 ROBOTS_PER_THREAD = 16
 """Fewest robots per numba thread: a step of a few robots on two threads of a loaded 2-core
 machine took 9 ms (waking the other thread), against 0.1 ms per robot on one."""
@@ -159,6 +160,7 @@ class BatchedExploreEnv(VectorEnv):
         self._rngs: list[np.random.Generator] = []
         self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
         self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
+        self._max_steps = min(c.max_steps, _INT64_MAX)  # a step count never passes it
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._weights = term_weights(c.rewards, self.term_names)
         self._slots: dict[str, np.ndarray] | None = None
@@ -201,7 +203,8 @@ class BatchedExploreEnv(VectorEnv):
         self._start(mask)
         if self.render_mode == "human":
             self.render()
-        return self._observe(), self._info(self._account(np.zeros(self.num_envs, dtype=bool)), rewards=False)
+        progress = self._account(np.zeros(self.num_envs, dtype=bool))
+        return self._observe(), self._info(progress, rewards=False, mask=mask)
 
     def step(
         self, actions: np.ndarray
@@ -494,7 +497,7 @@ class BatchedExploreEnv(VectorEnv):
         slots = self._slot_arrays()
         return account(
             stepped, self._terms, self._weights, self._motion, self._batch.observed, slots["reachable"],
-            slots["cell_m2"], self.config.max_steps, self._steps, self._path, self._collisions,
+            slots["cell_m2"], self._max_steps, self._steps, self._path, self._collisions,
         )  # fmt: skip
 
     def _observe(self) -> dict[str, np.ndarray]:
@@ -505,8 +508,14 @@ class BatchedExploreEnv(VectorEnv):
         )  # fmt: skip
         return {"scan": scan, "local_map": local_map, "velocity": velocity, "pose": pose}
 
-    def _info(self, progress: tuple[np.ndarray, ...], rewards: bool = True) -> dict[str, Any]:
-        """``info`` from :meth:`_account`'s arrays; with ``rewards``, the step's reward terms too."""
+    def _info(
+        self, progress: tuple[np.ndarray, ...], rewards: bool = True, mask: np.ndarray | None = None
+    ) -> dict[str, Any]:
+        """``info`` from :meth:`_account`'s arrays; with ``rewards``, the step's reward terms too.
+
+        ``mask`` marks the sub-environments the info is about (Gymnasium's ``_key`` arrays): all
+        after a step, the ones started after a partial reset.
+        """
         _, _, coverage, observed_m2, path, collisions, by_term = progress
         values = {
             "coverage": coverage,
@@ -514,7 +523,7 @@ class BatchedExploreEnv(VectorEnv):
             "path_length_m": path,
             "collisions": collisions,
         }
-        mask = np.ones(self.num_envs, dtype=bool)
+        mask = np.ones(self.num_envs, dtype=bool) if mask is None else mask.copy()
         info: dict[str, Any] = {}
         for key, value in values.items():
             info[key] = value

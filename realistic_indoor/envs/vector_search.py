@@ -79,9 +79,11 @@ class BatchedSearchEnv(BatchedExploreEnv):
         )
         return obs
 
-    def _info(self, progress: tuple[np.ndarray, ...], rewards: bool = True) -> dict[str, Any]:
-        info = super()._info(progress, rewards)
-        mask = np.ones(self.num_envs, dtype=bool)
+    def _info(
+        self, progress: tuple[np.ndarray, ...], rewards: bool = True, mask: np.ndarray | None = None
+    ) -> dict[str, Any]:
+        info = super()._info(progress, rewards, mask)
+        mask = info["_coverage"]
         info["victims_found"] = np.array([int(v.found.sum()) for v in self._victims])
         info["victims_total"] = np.array([len(v.found) for v in self._victims])
         info["_victims_found"] = info["_victims_total"] = mask

@@ -240,23 +240,39 @@ def test_vector_env__refuses_bad_restarts_seeds_and_use_after_close():
 
 
 def test_vector_env__reset_mask_starts_only_the_masked_sub_envs_as_the_single_env_would():
-    envs = _make(n=3)
-    obs, _ = envs.reset(seed=0)
+    envs, twin = _make(n=3), _make(n=3)  # the twin never resets: sub-envs 0 and 2 must follow it
+    envs.reset(seed=0)
+    twin.reset(seed=0)
     actions = np.tile(np.array([1.0, 0.2], np.float32), (3, 1))
     for _ in range(4):
         before, *_ = envs.step(actions)
+        twin.step(actions)
     obs, info = envs.reset(seed=10, options={"reset_mask": np.array([False, True, False])})
     single = gym.make("OfficeExplore-v0", area_m2=TEST_AREAS_M2["office"])
     first, _ = single.reset(seed=11)  # sub-env 1 seeded with 10 + 1
     assert data_equivalence(first, {k: v[1] for k, v in obs.items()}, exact=True)
     assert info["path_length_m"][1] == 0.0 and info["path_length_m"][0] > 0.0
+    assert info["_coverage"].tolist() == [False, True, False]  # as Gymnasium's: what was reset
     for k in (0, 2):  # the others keep their state and last observation
         assert data_equivalence(
             {n: v[k] for n, v in before.items()}, {n: v[k] for n, v in obs.items()}, exact=True
         )
-    obs, *_ = envs.step(actions)
-    one, *_ = single.step(actions[1])
-    assert data_equivalence(one, {k: v[1] for k, v in obs.items()}, exact=True)
+    for _ in range(3):
+        obs, *_ = envs.step(actions)
+        one, *_ = single.step(actions[1])
+        other, *_ = twin.step(actions)
+        assert data_equivalence(one, {k: v[1] for k, v in obs.items()}, exact=True)
+        for k in (0, 2):  # same noise: their generators were not reseeded
+            assert data_equivalence(
+                {n: v[k] for n, v in other.items()}, {n: v[k] for n, v in obs.items()}, exact=True
+            )
+
+
+def test_vector_env__a_step_limit_beyond_int64_never_truncates():
+    envs = _make(n=2, max_steps=2**70)
+    envs.reset(seed=0)
+    _, _, _, truncated, _ = envs.step(np.zeros((2, 2), np.float32))
+    assert not truncated.any()
 
 
 def test_vector_env__refuses_bad_reset_options():

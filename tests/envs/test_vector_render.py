@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pickle
+
 import gymnasium as gym
 import numpy as np
 import pytest
@@ -93,9 +95,25 @@ def test_human__one_window_shows_every_sub_env_side_by_side(monkeypatch):
     for _ in range(3):
         human.step(actions)
         twin.step(actions)
+        assert pygame.display.get_caption()[0].endswith("HouseExplore-v0 x 3")
+        shown = pygame.surfarray.array3d(pygame.display.get_surface()).swapaxes(0, 1)
+        np.testing.assert_array_equal(shown, upscaled(tile(twin.render())))  # step() drew it
     assert human.render() is None
-    assert pygame.display.get_caption()[0].endswith("HouseExplore-v0 x 3")
-    shown = pygame.surfarray.array3d(pygame.display.get_surface()).swapaxes(0, 1)
-    np.testing.assert_array_equal(shown, upscaled(tile(twin.render())))
     human.close()
     assert not pygame.display.get_init()
+
+
+def test_rgb_array__a_pickled_env_draws_what_the_original_draws():
+    envs = gym.make_vec(
+        "HouseExplore-v0", num_envs=2, area_m2=TEST_AREAS_M2["house"], render_mode="rgb_array"
+    )
+    envs.reset(seed=3)
+    actions = np.tile(np.array([1.0, -0.3], np.float32), (2, 1))
+    for _ in range(5):
+        envs.step(actions)
+    copy = pickle.loads(pickle.dumps(envs))
+    for _ in range(5):
+        envs.step(actions)
+        copy.step(actions)
+    for mine, theirs in zip(envs.render(), copy.render(), strict=True):  # the trajectories came along
+        np.testing.assert_array_equal(mine, theirs)

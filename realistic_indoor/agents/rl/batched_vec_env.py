@@ -162,7 +162,10 @@ class BatchedVecEnv(VecEnv):
         return [frames[i] for i in self._order]
 
     def render(self, mode: str | None = None) -> np.ndarray | None:
-        """The sub-environments' top views side by side (SB3's ``render``, for ``VecVideoRecorder``).
+        """The sub-environments' top views side by side (SB3's ``render``).
+
+        The image's size follows the buildings': it changes when a sub-environment moves to a
+        building of another size (a video of it then holds one set of buildings only).
 
         With ``render_mode="rgb_array"`` groups, one image of every frame
         (:func:`~realistic_indoor.envs.render.tile`: SB3's own tiling takes frames of one size

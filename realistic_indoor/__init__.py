@@ -14,9 +14,13 @@ Importing the package registers the Gymnasium ids (``OfficeExplore-v0``, ..., se
 from __future__ import annotations
 
 import importlib
+from pathlib import Path
 from typing import Any
 
+from realistic_indoor._kernel_sources import refresh_kernel_sources
 from realistic_indoor.version import __version__
+
+refresh_kernel_sources(Path(__file__).parent)  # before any numba kernel loads from its cache
 
 _LAZY = {
     "Building": "realistic_indoor.building",

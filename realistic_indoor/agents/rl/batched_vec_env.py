@@ -64,6 +64,7 @@ class BatchedVecEnv(VecEnv):
         if sorted(self._order.tolist()) != list(range(n)):
             raise ValueError(f"BatchedVecEnv: order must be a permutation of range({n}), got {order!r}")
         self._rank = np.argsort(self._order)  # group-after-group position -> this numbering
+        self._in_order = bool((self._order == np.arange(n)).all())
         self.render_mode = None
         super().__init__(n, obs_space, first.single_action_space)
         self._actions: np.ndarray | None = None
@@ -122,26 +123,29 @@ class BatchedVecEnv(VecEnv):
         self, lo: int, reward: np.ndarray, terminated: np.ndarray, truncated: np.ndarray, info: dict
     ) -> list[dict[str, Any]]:
         """Per sub-environment ``info`` dicts of one group (Monitor's ``episode`` at an end)."""
-        out = []
+        n = len(reward)
+        self._returns[lo : lo + n] += reward
+        self._lengths[lo : lo + n] += 1
+        out = _env_infos(info, n)  # what the single env's info holds
+        ended = terminated | truncated
+        limited = (truncated & ~terminated).tolist()
         now = time.perf_counter()
-        for k in range(len(reward)):
-            i = lo + k
-            self._returns[i] += reward[k]
-            self._lengths[i] += 1
-            item: dict[str, Any] = _env_info(info, k)  # what the single env's info holds
-            item["TimeLimit.truncated"] = bool(truncated[k] and not terminated[k])
-            if terminated[k] or truncated[k]:
-                item["episode"] = {
-                    "r": round(float(self._returns[i]), 6),  # as SB3's Monitor rounds it
-                    "l": int(self._lengths[i]),
-                    "t": round(now - self._starts[i], 6),
-                    "coverage": item["coverage"],  # Monitor(info_keywords=("coverage",)) adds it
-                }
-                self._returns[i], self._lengths[i], self._starts[i] = 0.0, 0, now
-            out.append(item)
+        for k, item in enumerate(out):
+            item["TimeLimit.truncated"] = limited[k]
+        for k in np.flatnonzero(ended):
+            i = lo + int(k)
+            out[k]["episode"] = {
+                "r": round(float(self._returns[i]), 6),  # as SB3's Monitor rounds it
+                "l": int(self._lengths[i]),
+                "t": round(now - self._starts[i], 6),
+                "coverage": out[k]["coverage"],  # Monitor(info_keywords=("coverage",)) adds it
+            }
+            self._returns[i], self._lengths[i], self._starts[i] = 0.0, 0, now
         return out
 
     def _join(self, parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+        if len(parts) == 1 and self._in_order:  # the group's arrays are new at every step: no copy
+            return {k: parts[0][k] for k in self.keys}
         return {k: np.concatenate([p[k] for p in parts])[self._order] for k in self.keys}
 
     def close(self) -> None:
@@ -210,11 +214,23 @@ class BatchedVecEnv(VecEnv):
         return self.groups[int(np.searchsorted(self._bounds, i, side="right")) - 1]
 
 
-def _env_info(info: dict[str, Any], k: int) -> dict[str, Any]:
-    """Sub-environment ``k``'s part of a native vector env's ``info`` (arrays and ``_key`` masks)."""
-    out: dict[str, Any] = {}
+def _env_infos(info: dict[str, Any], n: int) -> list[dict[str, Any]]:
+    """Each sub-environment's part of a native vector env's ``info`` (arrays and ``_key`` masks).
+
+    Each array becomes Python values once (``tolist``), not one ``item()`` per value.
+    """
+    columns: list[tuple[str, Any]] = []
     for key, value in info.items():
         if key.startswith("_"):
             continue
-        out[key] = {n: v[k].item() for n, v in value.items()} if isinstance(value, dict) else value[k].item()
-    return out
+        if isinstance(value, dict):
+            columns.append((key, {name: v.tolist() for name, v in value.items()}))
+        else:
+            columns.append((key, value.tolist()))
+    return [
+        {
+            key: {name: c[k] for name, c in col.items()} if isinstance(col, dict) else col[k]
+            for key, col in columns
+        }
+        for k in range(n)
+    ]

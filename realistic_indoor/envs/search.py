@@ -145,18 +145,8 @@ class SearchEnv(ExploreEnv):
 
     def _reset_simulation(self, options: dict[str, Any]) -> None:
         given = options.get("victims")
-        xy = None if given is None else self._given_victims(given)
+        xy = None if given is None else given_victims(given, self.config)
         self._sim.reset(self.np_random, victims_xy=xy)
-
-    def _given_victims(self, victims: object) -> np.ndarray:
-        xy = np.array(victims, dtype=float)
-        n = self.config.victims.n_victims
-        if xy.shape != (n, 2) or not np.isfinite(xy).all():
-            raise ConfigError(
-                f"reset option victims must be {n} finite (x, y) positions in metres (victims.n_victims), "
-                f"got an array of shape {xy.shape}"
-            )
-        return xy
 
     def _terminated(self) -> bool:
         return bool(_victims_of(self._sim).found.all())
@@ -173,3 +163,25 @@ def _victims_of(sim: Simulation) -> Victims:
     """The victims of a search simulation (one built with ``victims=True``)."""
     assert sim.victims is not None, "a search simulation has victims"
     return sim.victims
+
+
+def given_victims(victims: object, config: EnvConfig) -> np.ndarray:
+    """The victim positions of ``reset(options={"victims": xy})``, checked.
+
+    Returns:
+        ``(n_victims, 2)`` float64 positions (m), a new array.
+
+    Raises:
+        ConfigError: If they are not ``config.victims.n_victims`` finite ``(x, y)`` pairs.
+    """
+    try:
+        xy = np.array(victims, dtype=float)
+    except (TypeError, ValueError):
+        xy = np.full((0,), np.nan)
+    n = config.victims.n_victims
+    if xy.shape != (n, 2) or not np.isfinite(xy).all():
+        raise ConfigError(
+            f"reset option victims must be {n} finite (x, y) positions in metres (victims.n_victims), "
+            f"got an array of shape {xy.shape}"
+        )
+    return xy

@@ -18,6 +18,7 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 from numba.typed import List
 
+from realistic_indoor.building import Building
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
@@ -95,6 +96,8 @@ class BatchedExploreEnv(VectorEnv):
     """The task whose configuration fields apply (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
     term_names: tuple[str, ...] = ("new_area", "collision", "time")
     """The reward terms, in the order the single environment sums them."""
+    reset_options: frozenset[str] = frozenset({"reset_mask", "building"})
+    """Keys ``reset(options=...)`` accepts."""
 
     def __init__(
         self,
@@ -176,15 +179,18 @@ class BatchedExploreEnv(VectorEnv):
             seed: ``s`` seeds sub-environment ``k`` with ``s + k``; a list gives one seed each
                 (``None`` entries draw fresh entropy); ``None`` keeps the generators (fresh ones
                 on the first reset). With a mask, only the masked sub-environments are seeded.
-            options: ``None``, or ``{"reset_mask": m}`` with ``m`` a ``(num_envs,)`` bool array
-                with at least one ``True``: only those sub-environments start a new episode
-                (Gymnasium's partial reset); the others keep their state and last observation.
+            options: ``None``, or any of ``{"reset_mask": m}``, ``m`` a ``(num_envs,)`` bool
+                array with at least one ``True``: only those sub-environments start a new
+                episode (Gymnasium's partial reset), the others keep their state and last
+                observation; ``{"building": b}``: the sub-environments started run this episode
+                in building ``b`` instead of drawing one, as ``ExploreEnv.reset`` does.
 
         Returns:
             The batched first observations and ``info`` (arrays).
 
         Raises:
-            ConfigError: For bad seeds, an option other than ``reset_mask`` or a bad mask.
+            ConfigError: For bad seeds, an unknown option, a bad mask or a building that is not
+                a ``Building``.
             ResetNeeded: For a mask before the first full reset.
         """
         seeds = self._seeds(seed)
@@ -200,7 +206,7 @@ class BatchedExploreEnv(VectorEnv):
             for k in np.flatnonzero(mask):
                 self._rngs[k] = np.random.default_rng(seeds[k])
             self._rng_list = List(self._rngs)
-        self._start(mask)
+        self._start(mask, options or {})
         if self.render_mode == "human":
             self.render()
         progress = self._account(np.zeros(self.num_envs, dtype=bool))
@@ -355,11 +361,14 @@ class BatchedExploreEnv(VectorEnv):
         return None
 
     # -- internals -----------------------------------------------------------------------------------
-    def _start(self, mask: np.ndarray) -> None:
-        """Start new episodes in the sub-environments of ``mask``, cancelling their pending autoresets."""
+    def _start(self, mask: np.ndarray, options: dict[str, Any] | None = None) -> None:
+        """Start new episodes in the sub-environments of ``mask``, cancelling their pending autoresets.
+
+        ``options`` are ``reset``'s (checked): each started sub-environment gets them.
+        """
         self._mode[:] = np.where(mask, RESET, SKIP)
         for k in np.flatnonzero(mask):
-            self._reset_one(int(k))
+            self._reset_one(int(k), options)
         self._autoreset[mask] = False
         if mask.any():
             self._run()
@@ -367,9 +376,14 @@ class BatchedExploreEnv(VectorEnv):
     def _reset_mask(self, options: dict[str, Any] | None) -> np.ndarray:
         """The sub-environments a reset starts: ``options["reset_mask"]``, checked, or all."""
         options = options or {}
-        unknown = sorted(set(options) - {"reset_mask"})
+        unknown = sorted(set(options) - self.reset_options)
         if unknown:
-            raise ConfigError(f"reset() takes the option 'reset_mask' only, got {unknown[0]!r}")
+            raise ConfigError(
+                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(self.reset_options))}"
+            )
+        building = options.get("building")
+        if building is not None and not isinstance(building, Building):
+            raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
         if "reset_mask" not in options:
             return np.ones(self.num_envs, dtype=bool)
         mask = options["reset_mask"]
@@ -396,15 +410,20 @@ class BatchedExploreEnv(VectorEnv):
                 require_int("BatchedExploreEnv.reset", "seed", s, 0)
         return seeds
 
-    def _reset_one(self, k: int) -> None:
-        """Draw sub-environment ``k``'s next building (built only if new) and reset its robot."""
-        rng = self._rngs[k]
-        building = self._source(rng)
+    def _reset_one(self, k: int, options: dict[str, Any] | None = None) -> None:
+        """Start sub-environment ``k``'s next episode, its robot at the start.
+
+        The building is ``options["building"]`` or the next one drawn; its world is built only
+        if no slot holds it already.
+        """
+        building = (options or {}).get("building")
+        if building is None:
+            building = self._source(self._rngs[k])
         batch = self._batch
         current = batch.worlds[k]
         if current is None or current.building is not building:
-            world = World(building, self.config.world)
-            batch.load(k, world, self._params[0], self._pool)
+            world = next((w for w in batch.worlds if w is not None and w.building is building), None)
+            batch.load(k, world or World(building, self.config.world), self._params[0], self._pool)
         batch.reset_robot(k)
         if self._views is not None:
             self._views.start(k, (float(batch.phys[k, X]), float(batch.phys[k, Y])))

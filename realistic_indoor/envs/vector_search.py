@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.envs.observations import explore_observations
-from realistic_indoor.envs.search import VictimObservation
+from realistic_indoor.envs.search import VictimObservation, given_victims
 from realistic_indoor.envs.vector import BatchedExploreEnv
 from realistic_indoor.sim.victims import Victims, place_victims
 
@@ -42,6 +42,7 @@ class BatchedSearchEnv(BatchedExploreEnv):
 
     task = "search"
     term_names = ("new_area", "collision", "time", "victim")
+    reset_options = frozenset({"reset_mask", "building", "victims"})
 
     def __init__(self, num_envs: int = 1, config: Any = None, max_episode_steps: int | None = None,
                  preset: str | None = None, render_mode: str | None = None, **overrides: Any) -> None:  # fmt: skip
@@ -57,11 +58,21 @@ class BatchedSearchEnv(BatchedExploreEnv):
     def _observation_parts(self) -> dict[str, Any]:
         return {**explore_observations(self.config), "victims": VictimObservation(self.config)}
 
-    def _reset_one(self, k: int) -> None:
-        super()._reset_one(k)  # the laser noise of the first scan is drawn: then the victims
+    def _reset_one(self, k: int, options: dict[str, Any] | None = None) -> None:
+        super()._reset_one(k, options)  # the laser noise of the first scan is drawn: then the victims
         world = self._batch.worlds[k]
-        xy = place_victims(world, self._rngs[k], self.config.victims)
+        given = (options or {}).get("victims")
+        if given is None:
+            xy = place_victims(world, self._rngs[k], self.config.victims)
+        else:
+            xy = given_victims(given, self.config)
         self._victims[k].reset(xy, world.raycaster, self._pose(k))
+
+    def _reset_mask(self, options: dict[str, Any] | None) -> np.ndarray:
+        mask = super()._reset_mask(options)
+        if (options or {}).get("victims") is not None:
+            given_victims(options["victims"], self.config)  # refused before any sub-environment resets
+        return mask
 
     def _sense(self, stepped: np.ndarray) -> None:
         self._terms[:, 3] = 0.0

@@ -137,7 +137,9 @@ class Batch:
         lists = (self.targets, self.grids, self.pooled, self.segments, self.seg_items)
         total = sum(int(a.nbytes) for lst in lists for a in lst)
         total += sum(b.nbytes for b in self.bits if b is not None)
-        worlds = sum(w.nbytes for w in self.worlds if w is not None)
+        worlds = sum(
+            w.nbytes for w in {id(w): w for w in self.worlds if w is not None}.values()
+        )  # shared once
         return total + worlds + self.phys.nbytes
 
 

@@ -283,8 +283,39 @@ def test_vector_env__refuses_bad_reset_options():
     for bad in ([True, False], np.array([1, 0]), np.array([True]), np.array([False, False])):
         with pytest.raises(ConfigError, match="reset_mask"):
             envs.reset(options={"reset_mask": bad})
-    with pytest.raises(ConfigError, match="'building'"):
-        envs.reset(options={"building": None})
+    with pytest.raises(ConfigError, match="unknown reset option 'victims'"):
+        envs.reset(options={"victims": [[1.0, 1.0]]})
+    with pytest.raises(ConfigError, match="must be a Building"):
+        envs.reset(options={"building": "office.json"})
+    search = _make("OfficeSearch-v0", n=2)
+    search.reset(seed=0)
+    before = search.unwrapped.victims
+    with pytest.raises(ConfigError, match="victims must be 3 finite"):
+        search.reset(options={"victims": [[1.0, 2.0]]})
+    for (xy, found), (xy0, found0) in zip(search.unwrapped.victims, before, strict=True):  # nothing reset
+        assert np.array_equal(xy, xy0) and np.array_equal(found, found0)
+
+
+@pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "OfficeSearch-v0"])
+def test_vector_env__reset_options_give_every_started_sub_env_the_single_envs_episode(env_id, toy_building):
+    options = {"building": toy_building}
+    if "Search" in env_id:
+        options["victims"] = [[2.0, 2.0], [5.0, 3.0], [8.0, 6.0]]
+    envs = gym.make_vec(env_id, num_envs=2)
+    obs, _ = envs.reset(seed=30, options=options)
+    assert envs.unwrapped.buildings == [toy_building, toy_building]
+    assert envs.unwrapped._batch.worlds[0] is envs.unwrapped._batch.worlds[1]  # built once
+    actions = np.random.default_rng(3).uniform(-1, 1, (40, 2, 2)).astype(np.float32)
+    for k in range(2):
+        single = gym.make(env_id)
+        one, _ = single.reset(seed=30 + k, options=options)
+        assert data_equivalence(one, {n: v[k] for n, v in obs.items()}, exact=True)
+        twin = gym.make_vec(env_id, num_envs=2)
+        twin.reset(seed=30, options=options)
+        for a in actions:
+            one, *_ = single.step(a[k])
+            got, *_ = twin.step(a)
+            assert data_equivalence(one, {n: v[k] for n, v in got.items()}, exact=True)
 
 
 @pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])

@@ -186,7 +186,9 @@ class BatchedExploreEnv(VectorEnv):
                 in building ``b`` instead of drawing one, as ``ExploreEnv.reset`` does.
 
         Returns:
-            The batched first observations and ``info`` (arrays).
+            The batched first observations and ``info`` (arrays), which adds to a step's info
+            ``start_pose``: ``(num_envs, 3)`` where each robot starts, ``(x m, y m, heading
+            rad)`` in its plan's frame, as the single environment's ``reset`` gives it.
 
         Raises:
             ConfigError: For bad seeds, an unknown option, a bad mask or a building that is not
@@ -210,7 +212,11 @@ class BatchedExploreEnv(VectorEnv):
         if self.render_mode == "human":
             self.render()
         progress = self._account(np.zeros(self.num_envs, dtype=bool))
-        return self._observe(), self._info(progress, rewards=False, mask=mask)
+        info = self._info(progress, rewards=False, mask=mask)
+        start = self._slot_arrays()
+        info["start_pose"] = np.stack([start["x"], start["y"], start["heading"]], axis=1)
+        info["_start_pose"] = info["_coverage"]
+        return self._observe(), info
 
     def step(
         self, actions: np.ndarray

@@ -302,14 +302,15 @@ def test_vector_env__reset_options_give_every_started_sub_env_the_single_envs_ep
     if "Search" in env_id:
         options["victims"] = [[2.0, 2.0], [5.0, 3.0], [8.0, 6.0]]
     envs = gym.make_vec(env_id, num_envs=2)
-    obs, _ = envs.reset(seed=30, options=options)
+    obs, info = envs.reset(seed=30, options=options)
     assert envs.unwrapped.buildings == [toy_building, toy_building]
     assert envs.unwrapped._batch.worlds[0] is envs.unwrapped._batch.worlds[1]  # built once
     actions = np.random.default_rng(3).uniform(-1, 1, (40, 2, 2)).astype(np.float32)
     for k in range(2):
         single = gym.make(env_id)
-        one, _ = single.reset(seed=30 + k, options=options)
+        one, one_info = single.reset(seed=30 + k, options=options)
         assert data_equivalence(one, {n: v[k] for n, v in obs.items()}, exact=True)
+        assert tuple(info["start_pose"][k]) == one_info["start_pose"] and info["_start_pose"][k]
         twin = gym.make_vec(env_id, num_envs=2)
         twin.reset(seed=30, options=options)
         for a in actions:

@@ -197,18 +197,20 @@ class BatchedExploreEnv(VectorEnv):
         """
         seeds = self._seeds(seed)
         mask = self._reset_mask(options)
+        if not self._rngs and not mask.all():
+            raise gym.error.ResetNeeded("the first reset() starts every sub-environment: drop the reset_mask")
+        previous = self._rngs, self._rng_list
         if not self._rngs:
-            if not mask.all():
-                raise gym.error.ResetNeeded(
-                    "the first reset() starts every sub-environment: drop the reset_mask"
-                )
             self._rngs = [np.random.default_rng(s) for s in seeds or [None] * self.num_envs]
-            self._rng_list = List(self._rngs)
         elif seeds is not None:
-            for k in np.flatnonzero(mask):
-                self._rngs[k] = np.random.default_rng(seeds[k])
+            self._rngs = [np.random.default_rng(seeds[k]) if mask[k] else g for k, g in enumerate(self._rngs)]
+        if self._rngs is not previous[0]:
             self._rng_list = List(self._rngs)
-        self._start(mask, options or {})
+        try:
+            self._start(mask, options or {})
+        except Exception:
+            self._rngs, self._rng_list = previous  # a refused reset leaves the generators as they were
+            raise
         if self.render_mode == "human":
             self.render()
         progress = self._account(np.zeros(self.num_envs, dtype=bool))
@@ -370,11 +372,16 @@ class BatchedExploreEnv(VectorEnv):
     def _start(self, mask: np.ndarray, options: dict[str, Any] | None = None) -> None:
         """Start new episodes in the sub-environments of ``mask``, cancelling their pending autoresets.
 
-        ``options`` are ``reset``'s (checked): each started sub-environment gets them.
+        ``options`` are ``reset``'s (checked): each started sub-environment gets them. Every
+        building is drawn and its world built before any sub-environment changes, so that a
+        building that cannot be used changes nothing (its error is raised, the generators put
+        back as they were).
         """
+        started = [int(k) for k in np.flatnonzero(mask)]
+        worlds = self._next_worlds(started, options)
         self._mode[:] = np.where(mask, RESET, SKIP)
-        for k in np.flatnonzero(mask):
-            self._reset_one(int(k), options)
+        for k in started:
+            self._reset_one(k, worlds[k], options)
         self._autoreset[mask] = False
         if mask.any():
             self._run()
@@ -416,20 +423,43 @@ class BatchedExploreEnv(VectorEnv):
                 require_int("BatchedExploreEnv.reset", "seed", s, 0)
         return seeds
 
-    def _reset_one(self, k: int, options: dict[str, Any] | None = None) -> None:
-        """Start sub-environment ``k``'s next episode, its robot at the start.
+    def _next_worlds(self, started: list[int], options: dict[str, Any] | None) -> dict[int, World]:
+        """The world of each started sub-environment's next episode, built only if no slot holds it.
 
-        The building is ``options["building"]`` or the next one drawn; its world is built only
-        if no slot holds it already.
+        The building is ``options["building"]`` or the next one drawn from the sub-environment's
+        generator. On an error the generators drawn from are put back as they were.
         """
-        building = (options or {}).get("building")
-        if building is None:
-            building = self._source(self._rngs[k])
+        given = (options or {}).get("building")
+        states = {k: self._rngs[k].bit_generator.state for k in started}
+        held = {id(w.building): w for w in self._batch.worlds if w is not None}
+        worlds: dict[int, World] = {}
+        try:
+            for k in started:
+                building = self._source(self._rngs[k]) if given is None else given
+                if id(building) not in held:
+                    held[id(building)] = World(building, self.config.world)
+                worlds[k] = held[id(building)]
+            if given is not None:
+                self._check_world(worlds[started[0]], options)
+        except Exception:
+            for k, state in states.items():
+                self._rngs[k].bit_generator.state = state
+            raise
+        return worlds
+
+    def _check_world(self, world: World, options: dict[str, Any] | None) -> None:
+        """Refuse a given building the task cannot run in (nothing for exploration)."""
+
+    def _reset_one(self, k: int, world: World | None = None, options: dict[str, Any] | None = None) -> None:
+        """Start sub-environment ``k``'s next episode in ``world`` (the next one drawn if ``None``).
+
+        ``options`` are ``reset``'s, for what a task adds (search: victims).
+        """
+        if world is None:
+            world = self._next_worlds([k], None)[k]
         batch = self._batch
-        current = batch.worlds[k]
-        if current is None or current.building is not building:
-            world = next((w for w in batch.worlds if w is not None and w.building is building), None)
-            batch.load(k, world or World(building, self.config.world), self._params[0], self._pool)
+        if batch.worlds[k] is not world:
+            batch.load(k, world, self._params[0], self._pool)
         batch.reset_robot(k)
         if self._views is not None:
             self._views.start(k, (float(batch.phys[k, X]), float(batch.phys[k, Y])))

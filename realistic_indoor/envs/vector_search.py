@@ -16,6 +16,7 @@ from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.search import VictimObservation, given_victims
 from realistic_indoor.envs.vector import BatchedExploreEnv
 from realistic_indoor.sim.victims import Victims, place_victims
+from realistic_indoor.sim.world import World
 
 __all__ = ["BatchedSearchEnv"]
 
@@ -58,8 +59,8 @@ class BatchedSearchEnv(BatchedExploreEnv):
     def _observation_parts(self) -> dict[str, Any]:
         return {**explore_observations(self.config), "victims": VictimObservation(self.config)}
 
-    def _reset_one(self, k: int, options: dict[str, Any] | None = None) -> None:
-        super()._reset_one(k, options)  # the laser noise of the first scan is drawn: then the victims
+    def _reset_one(self, k: int, world: World | None = None, options: dict[str, Any] | None = None) -> None:
+        super()._reset_one(k, world, options)  # the laser noise of the first scan is drawn: then the victims
         world = self._batch.worlds[k]
         given = (options or {}).get("victims")
         if given is None:
@@ -67,6 +68,10 @@ class BatchedSearchEnv(BatchedExploreEnv):
         else:
             xy = given_victims(given, self.config)
         self._victims[k].reset(xy, world.raycaster, self._pose(k))
+
+    def _check_world(self, world: World, options: dict[str, Any] | None) -> None:
+        if (options or {}).get("victims") is None:  # rooms to place them in (a throwaway draw)
+            place_victims(world, np.random.default_rng(0), self.config.victims)
 
     def _reset_mask(self, options: dict[str, Any] | None) -> np.ndarray:
         mask = super()._reset_mask(options)

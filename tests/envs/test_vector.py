@@ -334,3 +334,51 @@ def test_vector_env__a_pickled_or_deep_copied_env_goes_on_as_the_original(env_id
         out = envs.step(a)
         for twin in copies:
             assert data_equivalence(out, twin.step(a), exact=True)
+
+
+def _hand_made(*rooms, doors=()):
+    from realistic_indoor.building import Building
+
+    return Building("office", tuple(rooms), tuple(doors), {"generator": "hand"})
+
+
+def test_vector_env__a_refused_reset_changes_nothing():
+    from realistic_indoor.building import Door, Room
+
+    corridor = _hand_made(
+        Room.rectangle("c", "corridor", "corridor", (0, 0, 10, 2)),
+        doors=(Door("entrance", "c", None, 0.0, 1.0, 1.2, np.pi / 2),),
+    )
+    envs, twin = _make("OfficeSearch-v0", n=3), _make("OfficeSearch-v0", n=3)
+    actions = np.random.default_rng(5).uniform(-1, 1, (30, 3, 2)).astype(np.float32)
+    for e in (envs, twin):
+        e.reset(seed=0)
+        e.step(actions[0])
+    with pytest.raises(ConfigError, match="no room can hold victims"):  # a corridor only
+        envs.reset(seed=7, options={"building": corridor})
+    with pytest.raises(ConfigError, match="victims must be 3 finite"):
+        envs.reset(seed=7, options={"victims": [[1.0, 2.0]]})
+    for a in actions[1:]:  # the same state, the same generators
+        assert data_equivalence(envs.step(a), twin.step(a), exact=True)
+
+
+def test_vector_env__after_a_refused_first_reset_a_step_asks_for_a_reset():
+    from realistic_indoor.building import Room
+
+    tiny = _hand_made(Room.rectangle("r", "small", "office", (0, 0, 0.6, 0.6)))  # no room for the robot
+    envs = _make(n=2)
+    with pytest.raises(ConfigError):
+        envs.reset(seed=0, options={"building": tiny})
+    with pytest.raises(gym.error.ResetNeeded):
+        envs.step(np.zeros((2, 2), np.float32))
+    envs.reset(seed=0)
+    envs.step(np.zeros((2, 2), np.float32))
+
+
+def test_vector_env__sub_envs_in_one_building_count_its_world_once(toy_building):
+    one = gym.make_vec("OfficeExplore-v0", num_envs=1, building=toy_building)
+    two = gym.make_vec("OfficeExplore-v0", num_envs=2, building=toy_building)
+    one.reset(seed=0)
+    two.reset(seed=0)
+    world = one.unwrapped._batch.worlds[0].nbytes
+    assert two.unwrapped.nbytes - one.unwrapped.nbytes == one.unwrapped.nbytes - world  # a robot's share

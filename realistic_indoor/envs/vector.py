@@ -233,9 +233,11 @@ class BatchedExploreEnv(VectorEnv):
             raise gym.error.ResetNeeded("call reset() before step()")
         self._commands[:] = self._command_batch(actions)
         self._mode[:] = np.where(self._autoreset, RESET, STEP)
-        if self._autoreset.any():
-            for k in np.flatnonzero(self._autoreset):
-                self._reset_one(int(k))
+        if self._autoreset.any():  # every next building drawn and built first, as in reset
+            starting = [int(k) for k in np.flatnonzero(self._autoreset)]
+            worlds = self._next_worlds(starting, None)
+            for k in starting:
+                self._reset_one(k, worlds[k])
         self._run()
         stepped = self._mode == STEP
         if self._views is not None:

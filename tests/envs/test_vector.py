@@ -382,3 +382,26 @@ def test_vector_env__sub_envs_in_one_building_count_its_world_once(toy_building)
     two.reset(seed=0)
     world = one.unwrapped._batch.worlds[0].nbytes
     assert two.unwrapped.nbytes - one.unwrapped.nbytes == one.unwrapped.nbytes - world  # a robot's share
+
+
+def test_vector_env__an_autoreset_whose_building_fails_changes_no_sub_env(toy_building):
+    calls = []
+
+    def flaky(rng):  # the fourth building asked for (the first autoreset's second) fails
+        calls.append(1)
+        if len(calls) == 4:
+            raise ConfigError("no building this time")
+        rng.random()
+        return toy_building
+
+    envs = gym.make_vec("OfficeExplore-v0", num_envs=2, generator=flaky, max_steps=2)
+    envs.reset(seed=0)
+    zero = np.zeros((2, 2), np.float32)
+    envs.step(zero)
+    envs.step(zero)  # both episodes end
+    steps = envs.unwrapped._steps.copy()
+    with pytest.raises(ConfigError, match="no building this time"):
+        envs.step(zero)
+    assert np.array_equal(envs.unwrapped._steps, steps)  # sub-env 0 was not reset alone
+    obs, reward, *_ = envs.step(zero)  # the next step starts both
+    assert (reward == 0).all() and np.allclose(obs["pose"], 0.0)

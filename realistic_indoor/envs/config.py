@@ -25,7 +25,7 @@ from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
-__all__ = ["TASK_FIELDS", "EnvConfig", "base_config", "require_task_fields"]
+__all__ = ["TASK_FIELDS", "EnvConfig", "base_config", "require_reset_options", "require_task_fields"]
 
 TASK_FIELDS: dict[str, str] = {"victims": "search", "coverage_target": "explore"}
 """Fields of :class:`EnvConfig` that one task only uses: field name -> that task."""
@@ -210,3 +210,17 @@ def require_task_fields(config: EnvConfig, task: str, named: Iterable[str] = ())
                 f"{name!r} applies to {owner} environments only ({owner.capitalize()} ids such as "
                 f"Office{owner.capitalize()}-v0), not to this {task} environment; remove it"
             )
+
+
+def require_reset_options(options: Mapping[str, Any] | None, known: Iterable[str]) -> dict[str, Any]:
+    """``reset``'s options, refused if one is not ``known``; ``{}`` for ``None``.
+
+    Raises:
+        ConfigError: Naming the first unknown option and the known ones.
+    """
+    options = dict(options or {})
+    known = sorted(known)
+    unknown = sorted(set(options) - set(known))
+    if unknown:
+        raise ConfigError(f"unknown reset option {unknown[0]!r}; known: {', '.join(known)}")
+    return options

@@ -10,10 +10,11 @@ from gymnasium import spaces
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
-from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import explore_observations
 from realistic_indoor.envs.rewards import reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
+from realistic_indoor.envs.source import episode_building
 from realistic_indoor.errors import ConfigError
 
 __all__ = ["ExploreEnv"]
@@ -200,18 +201,9 @@ class ExploreEnv(gym.Env):
             ``(x m, y m, heading rad)`` where the robot starts, in the plan's frame.
         """
         super().reset(seed=seed)
-        options = options or {}
-        unknown = sorted(set(options) - self.reset_options)
-        if unknown:
-            raise ConfigError(
-                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(self.reset_options))}"
-            )
+        options = require_reset_options(options, self.reset_options)
         building = options.get("building")
-        if building is None:
-            building = self._source(self.np_random)
-        if not isinstance(building, Building):
-            raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
-        self._sim.load(building)
+        self._sim.load(episode_building(self._source(self.np_random) if building is None else building))
         self._reset_simulation(options)
         self._steps = 0
         info = self._info()

@@ -38,6 +38,7 @@ __all__ = [
     "GeneratedBuildings",
     "PlanFile",
     "as_source",
+    "episode_building",
     "source_from_keywords",
 ]
 
@@ -172,6 +173,17 @@ BuildingSource = Union[GeneratedBuildings, CustomGenerator, FixedBuilding, PlanF
 """Where an environment's buildings come from: one of the four kinds above."""
 
 _KINDS = (GeneratedBuildings, CustomGenerator, FixedBuilding, PlanFile)
+
+
+def episode_building(building: object) -> Building:
+    """``building`` as an episode's building: given in ``reset``'s options or drawn from a source.
+
+    Raises:
+        ConfigError: If it is not a :class:`~realistic_indoor.building.Building`.
+    """
+    if not isinstance(building, Building):
+        raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
+    return building
 
 
 def as_source(value: object) -> BuildingSource:

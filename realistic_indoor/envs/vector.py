@@ -18,13 +18,13 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 from numba.typed import List
 
-from realistic_indoor.building import Building
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
-from realistic_indoor.envs.config import EnvConfig, base_config, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.rewards import term_weights
+from realistic_indoor.envs.source import episode_building
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ActionError, ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
@@ -191,8 +191,8 @@ class BatchedExploreEnv(VectorEnv):
             rad)`` in its plan's frame, as the single environment's ``reset`` gives it.
 
         Raises:
-            ConfigError: For bad seeds, an unknown option, a bad mask or a building that is not
-                a ``Building``.
+            ConfigError: For bad seeds, an unknown option, a bad mask or a building (given or
+                drawn) that is not a ``Building``.
             ResetNeeded: For a mask before the first full reset.
         """
         seeds = self._seeds(seed)
@@ -390,15 +390,7 @@ class BatchedExploreEnv(VectorEnv):
 
     def _reset_mask(self, options: dict[str, Any] | None) -> np.ndarray:
         """The sub-environments a reset starts: ``options["reset_mask"]``, checked, or all."""
-        options = options or {}
-        unknown = sorted(set(options) - self.reset_options)
-        if unknown:
-            raise ConfigError(
-                f"unknown reset option {unknown[0]!r}; known: {', '.join(sorted(self.reset_options))}"
-            )
-        building = options.get("building")
-        if building is not None and not isinstance(building, Building):
-            raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
+        options = require_reset_options(options, self.reset_options)
         if "reset_mask" not in options:
             return np.ones(self.num_envs, dtype=bool)
         mask = options["reset_mask"]
@@ -437,7 +429,7 @@ class BatchedExploreEnv(VectorEnv):
         worlds: dict[int, World] = {}
         try:
             for k in started:
-                building = self._source(self._rngs[k]) if given is None else given
+                building = episode_building(self._source(self._rngs[k]) if given is None else given)
                 if id(building) not in held:
                     held[id(building)] = World(building, self.config.world)
                 worlds[k] = held[id(building)]
@@ -452,13 +444,11 @@ class BatchedExploreEnv(VectorEnv):
     def _check_world(self, world: World, options: dict[str, Any] | None) -> None:
         """Refuse a given building the task cannot run in (nothing for exploration)."""
 
-    def _reset_one(self, k: int, world: World | None = None, options: dict[str, Any] | None = None) -> None:
-        """Start sub-environment ``k``'s next episode in ``world`` (the next one drawn if ``None``).
+    def _reset_one(self, k: int, world: World, options: dict[str, Any] | None = None) -> None:
+        """Start sub-environment ``k``'s next episode in ``world`` (:meth:`_next_worlds`).
 
         ``options`` are ``reset``'s, for what a task adds (search: victims).
         """
-        if world is None:
-            world = self._next_worlds([k], None)[k]
         batch = self._batch
         if batch.worlds[k] is not world:
             batch.load(k, world, self._params[0], self._pool)

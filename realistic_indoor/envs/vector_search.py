@@ -59,7 +59,7 @@ class BatchedSearchEnv(BatchedExploreEnv):
     def _observation_parts(self) -> dict[str, Any]:
         return {**explore_observations(self.config), "victims": VictimObservation(self.config)}
 
-    def _reset_one(self, k: int, world: World | None = None, options: dict[str, Any] | None = None) -> None:
+    def _reset_one(self, k: int, world: World, options: dict[str, Any] | None = None) -> None:
         super()._reset_one(k, world, options)  # the laser noise of the first scan is drawn: then the victims
         world = self._batch.worlds[k]
         given = (options or {}).get("victims")

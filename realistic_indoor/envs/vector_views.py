@@ -14,7 +14,6 @@ import numpy as np
 from realistic_indoor.envs.render import Scene, draw, tile
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.lidar import LidarConfig, beam_offsets
-from realistic_indoor.sim.raster import RASTER_WALL
 from realistic_indoor.sim.raycast import RayHits
 from realistic_indoor.sim.world import World
 
@@ -96,7 +95,7 @@ class SubEnvViews:
             scan_pose=pose,
             scan_ranges_m=scan_m,
             scan_offsets_rad=self._offsets,
-            scan_returned=true.kind == RASTER_WALL,
+            scan_returned=true.returned,
             radius_m=self._radius_m,
             victims_xy=xy,
             victims_found=found,

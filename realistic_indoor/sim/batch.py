@@ -60,9 +60,7 @@ class Batch:
         self.observed = np.zeros(n, dtype=np.int64)
         self.worlds: list[World | None] = [None] * n
         empty2 = np.zeros((1, 1), dtype=np.uint8)
-        frozen = np.zeros((1, 1), dtype=np.uint8)
-        frozen.setflags(write=False)  # the raycasters' skip fields are read-only
-        self.skips = List([frozen] * n)
+        self.skips = _skip_fields(self.worlds)
         self.targets = List([empty2] * n)
         self.segments = List([np.zeros((1, 4))] * n)
         self.seg_start = List([np.zeros(2, dtype=np.int64)] * n)
@@ -118,17 +116,15 @@ class Batch:
     def __getstate__(self) -> dict[str, Any]:
         """The state to pickle: numba's typed lists as plain lists (they do not pickle)."""
         state = {**self.__dict__, "skips": None}  # each world's raycaster holds its skip field
-        for name in _TYPED_LISTS[1:]:
+        for name in _TYPED_LISTS:
             state[name] = list(state[name])
         return state
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         """Rebuild the typed lists; the skip fields are the (unpickled) worlds' own again."""
-        frozen = np.zeros((1, 1), dtype=np.uint8)
-        frozen.setflags(write=False)
-        state["skips"] = [frozen if w is None else w.raycaster._skip for w in state["worlds"]]
         for name in _TYPED_LISTS:
             state[name] = List(state[name])
+        state["skips"] = _skip_fields(state["worlds"])
         self.__dict__.update(state)
 
     @property
@@ -144,9 +140,25 @@ class Batch:
 
 
 _TYPED_LISTS = (
-    "skips", "targets", "segments", "seg_start", "seg_items", "seg_origin", "grids", "pooled", "todo", "walls",
-)  # fmt: skip
-"""The :class:`Batch` attributes held in numba typed lists."""
+    "targets",
+    "segments",
+    "seg_start",
+    "seg_items",
+    "seg_origin",
+    "grids",
+    "pooled",
+    "todo",
+    "walls",
+)
+"""The :class:`Batch` attributes held in numba typed lists, besides ``skips`` (:func:`_skip_fields`)."""
+
+
+def _skip_fields(worlds: list[World | None]) -> List:
+    """The typed list of each slot's skip field: its world's raycaster's, read-only, or a placeholder."""
+    frozen = np.zeros((1, 1), dtype=np.uint8)
+    frozen.setflags(write=False)  # the raycasters' skip fields are read-only
+    return List([frozen if w is None else w.raycaster._skip for w in worlds])
+
 
 LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 """Local view grey level of each map cell state."""

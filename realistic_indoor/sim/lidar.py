@@ -82,7 +82,7 @@ class Scan(NamedTuple):
     @property
     def returned(self) -> np.ndarray:
         """Which beams returned from a wall (bool, ``(n_beams,)``)."""
-        return self.true.kind == RASTER_WALL
+        return self.true.returned
 
 
 class Lidar:

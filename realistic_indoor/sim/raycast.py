@@ -46,6 +46,11 @@ class RayHits(NamedTuple):
     range_m: np.ndarray
     kind: np.ndarray
 
+    @property
+    def returned(self) -> np.ndarray:
+        """Which rays returned from a wall (bool, ``(N,)``): a laser's beams with a reading."""
+        return self.kind == RASTER_WALL
+
 
 class Raycaster:
     """Casts rays on a raster of one building; build one per building and reuse it.

@@ -287,6 +287,9 @@ def test_vector_env__refuses_bad_reset_options():
         envs.reset(options={"victims": [[1.0, 1.0]]})
     with pytest.raises(ConfigError, match="must be a Building"):
         envs.reset(options={"building": "office.json"})
+    drawn = gym.make_vec("OfficeExplore-v0", num_envs=2, generator=lambda rng: "office.json")
+    with pytest.raises(ConfigError, match="must be a Building, got str"):  # as the single env's
+        drawn.reset(seed=0)
     search = _make("OfficeSearch-v0", n=2)
     search.reset(seed=0)
     before = search.unwrapped.victims

@@ -83,6 +83,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
+    from realistic_indoor.cli import checkout_commit
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.evaluation.twins import behaviour_realism, shown_path
     from realistic_indoor.validator.plan_sets import show_progress
@@ -109,7 +110,7 @@ def main(argv: list[str] | None = None) -> int:
         strict=args.strict,
         resume=args.resume,
         progress=show_progress(),
-        meta={"command": _command(argv), "commit": _commit()},
+        meta={"command": _command(argv), "commit": checkout_commit(ROOT)},
         twins_per_plan=args.twins,
     )
     print((out / "behaviour_realism.md").read_text(encoding="utf-8"))
@@ -162,19 +163,6 @@ def _command(argv: list[str] | None) -> str:
     """The command line that ran, as the report shows it."""
     given = sys.argv[1:] if argv is None else argv
     return " ".join([".venv/bin/python experiments/behaviour_realism.py", *map(shlex.quote, given)])
-
-
-def _commit() -> str | None:
-    """The checkout's commit, recorded with the results (``None`` outside git)."""
-    import subprocess
-
-    try:
-        done = subprocess.run(
-            ["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True
-        )
-    except (OSError, subprocess.CalledProcessError):
-        return None
-    return done.stdout.strip()
 
 
 if __name__ == "__main__":

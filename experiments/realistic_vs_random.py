@@ -117,6 +117,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
+    from realistic_indoor.cli import checkout_commit
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
     from realistic_indoor.files import write_text
 
@@ -143,7 +144,7 @@ def main(argv: list[str] | None = None) -> int:
     command = " ".join([".venv/bin/python experiments/realistic_vs_random.py", *map(shlex.quote, given)])
     meta = {
         "command": command,
-        "commit": _commit(),
+        "commit": checkout_commit(ROOT),
         "agents": {label: _portable(name) for label, name in agents.items()},
         "episodes": episodes,
         "real_plans": [_portable(s.plan) for s in real],
@@ -169,19 +170,6 @@ def report_only(out: Path) -> int:
     draw(results, list(meta["agents"]), out)
     print(report)
     return 0
-
-
-def _commit() -> str | None:
-    """The checkout's commit, recorded with the results (``None`` outside git)."""
-    import subprocess
-
-    try:
-        done = subprocess.run(
-            ["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True
-        )
-    except (OSError, subprocess.CalledProcessError):
-        return None
-    return done.stdout.strip()
 
 
 def ensure_models(folder: Path, preset: str, small: bool) -> dict[str, str]:

@@ -298,3 +298,28 @@ def test_convert__folder_mistakes_are_one_line(plans_with_broken, tiny_office, t
         assert main(argv) == 1, argv
         _one_line_error(capsys.readouterr().err, message)
     assert not (tmp_path / "o").exists()
+
+
+def test_checkout_commit__is_the_head_of_a_git_checkout_and_none_elsewhere(tmp_path):
+    import shutil
+
+    from realistic_indoor.cli import checkout_commit
+
+    outside = tmp_path / "plain"
+    outside.mkdir()
+    assert checkout_commit(outside) is None
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed")
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@example.org"]
+    subprocess.run([*git, "init", "-q"], cwd=repo, check=True)
+    assert checkout_commit(repo) is None  # no commit yet
+    (repo / "a.txt").write_text("a\n")
+    subprocess.run([*git, "add", "a.txt"], cwd=repo, check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "a"], cwd=repo, check=True)
+    logged = subprocess.run(
+        ["git", "log", "-1", "--format=%H"], cwd=repo, capture_output=True, text=True, check=True
+    ).stdout.strip()
+    assert checkout_commit(repo) == logged
+    assert len(logged) == 40

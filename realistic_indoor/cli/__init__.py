@@ -18,7 +18,7 @@ from collections.abc import Callable
 from realistic_indoor import __version__
 from realistic_indoor.errors import RealisticIndoorError
 
-__all__ = ["build_parser", "main", "run_script"]
+__all__ = ["build_parser", "checkout_commit", "main", "run_script"]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -44,6 +44,23 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help()
         return 2
     return run_script(lambda: args.func(args), f"realistic-indoor {args.command}")
+
+
+def checkout_commit(folder: str | os.PathLike[str]) -> str | None:
+    """The commit checked out in ``folder``, for scripts to record with their results.
+
+    Returns:
+        The full hash of ``HEAD``; ``None`` outside a git checkout or without git.
+    """
+    import subprocess
+
+    try:
+        done = subprocess.run(
+            ["git", "rev-parse", "HEAD"], cwd=folder, capture_output=True, text=True, check=True
+        )
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return done.stdout.strip()
 
 
 def run_script(main_fn: Callable[[], int | None], name: str) -> int:

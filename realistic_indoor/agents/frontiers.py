@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 from scipy import ndimage
 
 from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_UNKNOWN
@@ -75,12 +76,35 @@ def find_frontiers(state: np.ndarray, searched: np.ndarray | None = None, min_ce
 
 def _compact(labels: np.ndarray, count: int, min_cells: int) -> Frontiers:
     """Drop the frontiers with fewer than ``min_cells`` cells and number the others 1..n."""
-    sizes = np.bincount(labels.ravel(), minlength=count + 1)
-    small = sizes < min_cells
-    small[0] = False
-    if small.any():
-        keep = np.cumsum(~small) - 1
-        keep[small] = 0
-        labels = keep[labels]
-        sizes = np.concatenate([[sizes[0]], sizes[1:][~small[1:]]])
-    return Frontiers(labels.astype(np.int32, copy=False), len(sizes) - 1, sizes)
+    out, sizes = _compact_labels(np.ascontiguousarray(labels), count, min_cells)
+    return Frontiers(out, len(sizes) - 1, sizes)
+
+
+@njit(cache=True, nogil=True)
+def _compact_labels(labels, count, min_cells):  # pragma: no cover - compiled
+    """:func:`_compact`'s work in two passes over the map: count the cells, then renumber.
+
+    Returns:
+        ``(labels, sizes)``: ``labels`` renumbered (int32, a new array), ``sizes`` int64 cells
+        per kept label (entry 0: the cells unlabelled on input, unused).
+    """
+    flat = labels.ravel()
+    counts = np.zeros(count + 1, dtype=np.int64)
+    for v in flat:
+        counts[v] += 1
+    number = np.zeros(count + 1, dtype=np.int32)
+    kept = 0
+    for lab in range(1, count + 1):
+        if counts[lab] >= min_cells:
+            kept += 1
+            number[lab] = kept
+    sizes = np.empty(kept + 1, dtype=np.int64)
+    sizes[0] = counts[0]
+    for lab in range(1, count + 1):
+        if number[lab]:
+            sizes[number[lab]] = counts[lab]
+    out = np.empty(labels.shape, dtype=np.int32)
+    out_flat = out.ravel()
+    for i in range(flat.shape[0]):
+        out_flat[i] = number[flat[i]]
+    return out, sizes

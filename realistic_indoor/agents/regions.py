@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 from scipy import ndimage
 
 from realistic_indoor.checks import require_positive
@@ -99,10 +100,8 @@ def find_regions(
     c = config or RegionConfig()
     core = (state == MAPPED_FREE) & (clearance_m >= c.door_half_width_m)
     labels, count = ndimage.label(core, structure=_EIGHT)
-    length, width, area = _shape(labels, count, resolution_m)
-    rows, cols = np.nonzero(labels)
-    widest = np.zeros(count + 1)
-    np.maximum.at(widest, labels[rows, cols], clearance_m[rows, cols])
+    sums, widest = _label_sums(labels, clearance_m, count)
+    length, width, area = _shape(sums, resolution_m)
     kinds = np.full(count + 1, ROOM_REGION, dtype=np.int8)
     corridor = (length[1:] >= c.corridor_length_m) & (length[1:] >= c.corridor_elongation * width[1:])
     hall = (widest[1:] >= c.hall_half_width_m) & (area[1:] >= c.hall_area_m2)
@@ -111,28 +110,57 @@ def find_regions(
     return Regions(labels.astype(np.int32, copy=False), kinds, length, width)
 
 
-def _shape(labels: np.ndarray, count: int, res: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _shape(sums: np.ndarray, res: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Length and width along the principal axes (m) and area (m2) of each label, entry 0 unused.
 
     A uniform rectangle of sides ``L`` and ``W`` has variances ``L**2 / 12`` and ``W**2 / 12``
     along its axes: sides are ``sqrt(12 * eigenvalue)`` of its cells' coordinate covariance
     (plus a cell's own spread).
+
+    Args:
+        sums: :func:`_label_sums`' ``(6, count + 1)`` cell counts and coordinate sums.
+        res: Side of a cell (m).
     """
-    rows, cols = np.nonzero(labels)
-    lab = labels[rows, cols]
-    n = np.maximum(np.bincount(lab, minlength=count + 1), 1).astype(float)
-
-    def mean(values: np.ndarray) -> np.ndarray:
-        return np.bincount(lab, values.astype(float), minlength=count + 1) / n
-
-    mr, mc = mean(rows), mean(cols)
-    var_r = mean(rows * rows) - mr * mr + 1.0 / 12
-    var_c = mean(cols * cols) - mc * mc + 1.0 / 12
-    cov = mean(rows * cols) - mr * mc
+    cells, s_r, s_c, s_rr, s_cc, s_rc = sums
+    n = np.maximum(cells, 1.0)
+    mr, mc = s_r / n, s_c / n
+    var_r = s_rr / n - mr * mr + 1.0 / 12
+    var_c = s_cc / n - mc * mc + 1.0 / 12
+    cov = s_rc / n - mr * mc
     half_trace = (var_r + var_c) / 2
     spread = np.sqrt(((var_r - var_c) / 2) ** 2 + cov * cov)
     major = np.sqrt(12 * np.maximum(half_trace + spread, 0.0)) * res
     minor = np.sqrt(12 * np.maximum(half_trace - spread, 0.0)) * res
     major[0] = minor[0] = 0.0
-    area = np.bincount(lab, minlength=count + 1) * res * res
+    area = cells * res * res
     return major, minor, area
+
+
+@njit(cache=True, nogil=True)
+def _label_sums(labels, clearance, count):  # pragma: no cover - compiled
+    """Per label of ``labels`` (0 left out): its cells, the sums of their coordinates, the widest clearance.
+
+    One pass over the map in row order, so that each sum adds its terms in the order NumPy's
+    ``bincount`` of the labelled cells would (the same floats to the bit).
+
+    Returns:
+        ``(sums, widest)``: ``(6, count + 1)`` float64 rows: cells, sum of rows, of columns, of
+        rows squared, of columns squared, of rows times columns; ``(count + 1,)`` float64 the
+        largest ``clearance`` of each label's cells (0 for none).
+    """
+    h, w = labels.shape
+    sums = np.zeros((6, count + 1))
+    widest = np.zeros(count + 1)
+    for r in range(h):
+        for c in range(w):
+            lab = labels[r, c]
+            if lab == 0:
+                continue
+            sums[0, lab] += 1.0
+            sums[1, lab] += float(r)
+            sums[2, lab] += float(c)
+            sums[3, lab] += float(r * r)
+            sums[4, lab] += float(c * c)
+            sums[5, lab] += float(r * c)
+            widest[lab] = max(widest[lab], float(clearance[r, c]))
+    return sums, widest

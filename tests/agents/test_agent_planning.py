@@ -69,3 +69,22 @@ def test_find_frontiers__search_adds_the_unswept_floor():
     assert find_frontiers(state).count == 0
     f = find_frontiers(state, searched)
     assert f.count == 1 and np.all(np.argwhere(f.mask)[:, 1] == 9)
+
+
+def test_find_frontiers__small_ones_dropped_the_rest_numbered_in_scan_order():
+    state = np.full((12, 20), MAPPED_OCCUPIED, dtype=np.uint8)
+    state[1, 1:6] = MAPPED_FREE  # 5 cells over unknown ones: a frontier
+    state[2, 1:6] = MAPPED_UNKNOWN
+    state[4, 10:12] = MAPPED_FREE  # 2 cells: too small
+    state[5, 10:12] = MAPPED_UNKNOWN
+    state[8, 3:7] = MAPPED_FREE  # 4 cells
+    state[9, 3:7] = MAPPED_UNKNOWN
+    f = find_frontiers(state, min_cells=3)
+    assert f.count == 2
+    assert f.labels.dtype == np.int32
+    assert list(f.sizes[1:]) == [5, 4]
+    assert (f.labels[1, 1:6] == 1).all() and (f.labels[8, 3:7] == 2).all()
+    assert f.labels[4, 10:12].tolist() == [0, 0]
+    rest = f.without(f.labels == 1)
+    assert rest.count == 1 and list(rest.sizes[1:]) == [4]
+    assert (rest.labels[8, 3:7] == 1).all() and rest.labels.sum() == 4

@@ -43,6 +43,19 @@ def test_find_regions__a_lone_corridor_is_long_and_thin_a_square_hall_is_wide():
     assert regions.width_m[corridor] == pytest.approx(1.0, abs=0.1)
 
 
+def test_find_regions__a_diagonal_corridor_is_measured_along_its_own_axis():
+    # a band 2.83 m wide (20 cells either side of the diagonal, 0.1 m cells) and 19.8 m long; the
+    # core leaves out 0.55 m along each wall and each end: about 1.7 x 18.7 m
+    state = np.full((200, 200), MAPPED_OCCUPIED, dtype=np.uint8)
+    r, c = np.mgrid[:200, :200]
+    state[(np.abs(r - c) <= 20) & (r + c >= 60) & (r + c <= 340)] = MAPPED_FREE
+    regions = find_regions(state, clearance(state, 0.1), 0.1)
+    corridor = regions.labels[100, 100]
+    assert regions.count == 1 and regions.kinds[corridor] == CORRIDOR_REGION
+    assert regions.length_m[corridor] == pytest.approx(18.7, abs=0.3)
+    assert regions.width_m[corridor] == pytest.approx(1.75, abs=0.25)
+
+
 @pytest.mark.parametrize("name", ["utility", "structure"])
 def test_map_explorers__cover_a_hand_made_office(name, hall_office):
     env = gym.make("OfficeExplore-v0", building=hall_office, max_steps=600, max_episode_steps=600)

@@ -53,8 +53,18 @@ class _Window:
         self, pose: tuple[float, float, float], ranges_m: np.ndarray, returned: np.ndarray
     ) -> np.ndarray:
         """Cells seen free by the beams, as a ``(size, size)`` bool array; ``pose`` in window metres."""
-        free_to = np.where(returned, np.maximum(ranges_m - _WALL_SHRINK_M, 0.0), ranges_m).astype(np.float32)
-        return self._marker.free(pose, free_to)
+        return self._marker.free(pose, self._free_to(ranges_m, returned))
+
+    def mark_unknown(
+        self, pose: tuple[float, float, float], ranges_m: np.ndarray, returned: np.ndarray, cells: np.ndarray
+    ) -> int:
+        """Mark free the unknown ``cells`` (a ``(size, size)`` view) the beams see; return how many."""
+        return self._marker.mark_unknown(pose, self._free_to(ranges_m, returned), cells)
+
+    @staticmethod
+    def _free_to(ranges_m: np.ndarray, returned: np.ndarray) -> np.ndarray:
+        """How far each beam saw free floor (m, float32): a returned one stops short of its wall."""
+        return np.where(returned, np.maximum(ranges_m - _WALL_SHRINK_M, 0.0), ranges_m).astype(np.float32)
 
 
 class OwnMap:
@@ -141,10 +151,7 @@ class OwnMap:
         returned = ranges < self.max_range_m * (1.0 - _RETURN_TOLERANCE)
         box = self._window_box(pose, self._laser.half)
         local = self._local_pose(pose, box)
-        seen = self._laser.free(local, ranges, returned)
-        part = self.state[box.slices]
-        new_free = seen & (part == MAPPED_UNKNOWN)
-        part[new_free] = MAPPED_FREE
+        new_free = self._laser.mark_unknown(local, ranges, returned, self.state[box.slices])
         new_walls = self._footprint(pose, footprint_m) if footprint_m > 0 else 0
         hits = self._endpoints(pose, ranges[returned], self._offsets[returned])
         new_walls += int(np.count_nonzero(self.state[hits] == MAPPED_UNKNOWN))
@@ -153,7 +160,7 @@ class OwnMap:
         self.known = Box(min(k.r0, box.r0), max(k.r1, box.r1), min(k.c0, box.c0), max(k.c1, box.c1))
         if self._search is not None:
             self._sweep(pose, ranges, returned)
-        return int(np.count_nonzero(new_free)) + new_walls
+        return new_free + new_walls
 
     def mark_blocked(self, pose: tuple[float, float, float], radius_m: float, half_width_m: float) -> None:
         """Mark as occupied a line across the path just ahead of a robot of ``radius_m``.

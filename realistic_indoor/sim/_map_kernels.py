@@ -201,6 +201,26 @@ def start_bits(targets):  # pragma: no cover - compiled
 
 
 @njit(cache=True, nogil=True)
+def unknown_bits(cells, out):  # pragma: no cover - compiled
+    """Write into ``out`` the to-do bits of the cells of a map still unknown.
+
+    Args:
+        cells: ``(H, W)`` uint8 ``MAPPED_*`` cells (any memory layout: a window of a larger map).
+        out: ``(H, ceil(W / WORD))`` int64, written: bit ``j`` of word ``w`` of row ``r`` set
+            where ``cells[r, WORD * w + j]`` is :data:`MAPPED_UNKNOWN`.
+    """
+    h, w = cells.shape
+    n_words = out.shape[1]
+    for r in range(h):
+        for word in range(n_words):
+            base = word * WORD
+            bits = np.int64(0)
+            for j in range(min(WORD, w - base)):
+                bits |= np.int64(cells[r, base + j] == MAPPED_UNKNOWN) << j
+            out[r, word] = bits
+
+
+@njit(cache=True, nogil=True)
 def _fan_outline(px, py, dxs, dys, ts, closed):  # pragma: no cover - compiled
     """Outline of the fan: for each two neighbouring beams, both at the shorter range.
 

@@ -20,10 +20,12 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
     TRUTH_FREE,
+    TRUTH_REACHABLE,
     integrate_scan,
     map_targets,
     render_local,
     start_bits,
+    unknown_bits,
 )
 from realistic_indoor.sim.raster import RASTER_FREE
 
@@ -283,6 +285,10 @@ class FreeSpaceMarker:
         self._grid = np.zeros(self.shape, dtype=np.uint8)
         self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here
         self._pooled = np.zeros((1, 1), dtype=np.uint8)
+        self._counted = np.full(
+            self.shape, TRUTH_REACHABLE, dtype=np.uint8
+        )  # the kernel counts each cell marked
+        self._unknown = np.empty_like(self._bits.todo)
 
     def free(self, pose: tuple[float, float, float], ranges_m: np.ndarray) -> np.ndarray:
         """The cells a scan swept free.
@@ -320,6 +326,46 @@ class FreeSpaceMarker:
             self._closed,
         )
         return self._grid == MAPPED_FREE
+
+    def mark_unknown(self, pose: tuple[float, float, float], ranges_m: np.ndarray, cells: np.ndarray) -> int:
+        """Mark free, in place, the unknown cells of a map that a scan sweeps; return how many.
+
+        The same cells as ``free(pose, ranges_m) & (cells == MAPPED_UNKNOWN)``, found without
+        sweeping the cells already known: only the unknown ones are visited.
+
+        Args:
+            pose: As :meth:`free`, in the frame of ``cells``.
+            ranges_m: As :meth:`free`.
+            cells: ``(rows, cols)`` uint8 ``MAPPED_*`` map of the marker's shape (a window of a
+                larger map may be passed as a view), updated.
+        """
+        if cells.shape != self.shape or cells.dtype != np.uint8:
+            raise ConfigError(
+                f"FreeSpaceMarker of shape {self.shape} needs uint8 cells of that shape, got {cells.dtype} {cells.shape}"
+            )
+        unknown_bits(cells, self._unknown)
+        x, y, theta = pose
+        res = self.resolution_m
+        return int(
+            integrate_scan(
+                cells,
+                self._pooled,
+                self._pool,
+                self._counted,
+                self._unknown,
+                self._bits.walls,
+                x / res,
+                y / res,
+                math.cos(theta),
+                math.sin(theta),
+                self._cos,
+                self._sin,
+                np.asarray(ranges_m, dtype=np.float32),
+                self._kind,
+                1.0 / res,
+                self._closed,
+            )
+        )
 
 
 def beam_table(offsets: np.ndarray) -> tuple[np.ndarray, np.ndarray, bool]:

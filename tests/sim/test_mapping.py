@@ -218,3 +218,30 @@ def test_free_space_marker__checks_its_grid():
         FreeSpaceMarker((10, 10), 0.0, np.zeros(3))
     with pytest.raises(ConfigError, match="beam offsets"):
         FreeSpaceMarker((10, 10), 0.1, np.zeros(0))
+
+
+def test_free_space_marker__mark_unknown_marks_only_the_unknown_cells_it_sweeps():
+    # a full circle of 1 m readings on 0.1 m cells, in the middle of a window of a larger map
+    marker = FreeSpaceMarker((40, 40), 0.1, Lidar(RING).offsets_rad)
+    pose = (2.05, 2.05, 0.3)
+    ranges = np.full(RING.n_beams, 1.0, dtype=np.float32)
+    swept = marker.free(pose, ranges)
+    big = np.full((60, 70), MAPPED_UNKNOWN, dtype=np.uint8)
+    window = big[10:50, 20:60]  # a view, not contiguous
+    window[20, 20:25] = MAPPED_OCCUPIED  # known cells inside the swept disc stay as they are
+    window[18:20, 15:18] = MAPPED_FREE
+    before = big.copy()
+    new = marker.mark_unknown(pose, ranges, window)
+    expected = swept & (before[10:50, 20:60] == MAPPED_UNKNOWN)
+    assert new == expected.sum()
+    # cells whose centre lies within 1 m, plus those the beams cross at its edge: between the
+    # discs of radius 10 -/+ 0.71 cells (pi * 9.29**2 = 271, pi * 10.71**2 = 360), less 11 known
+    assert 260 < new < 360
+    assert np.array_equal(window == MAPPED_FREE, expected | (before[10:50, 20:60] == MAPPED_FREE))
+    assert (window[20, 20:25] == MAPPED_OCCUPIED).all()
+    outside = np.ones(big.shape, dtype=bool)
+    outside[10:50, 20:60] = False
+    assert np.array_equal(big[outside], before[outside])
+    assert marker.mark_unknown(pose, ranges, window) == 0  # nothing left to mark
+    with pytest.raises(ConfigError, match="uint8 cells of that shape"):
+        marker.mark_unknown(pose, ranges, np.zeros((40, 41), dtype=np.uint8))

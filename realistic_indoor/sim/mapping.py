@@ -305,26 +305,7 @@ class FreeSpaceMarker:
         """
         self._grid.fill(MAPPED_UNKNOWN)
         self._bits.reset()
-        x, y, theta = pose
-        res = self.resolution_m
-        integrate_scan(
-            self._grid,
-            self._pooled,
-            self._pool,
-            self._targets,
-            self._bits.todo,
-            self._bits.walls,
-            x / res,
-            y / res,
-            math.cos(theta),
-            math.sin(theta),
-            self._cos,
-            self._sin,
-            np.asarray(ranges_m, dtype=np.float32),
-            self._kind,
-            1.0 / res,
-            self._closed,
-        )
+        self._sweep(pose, ranges_m, self._grid, self._targets, self._bits.todo)
         return self._grid == MAPPED_FREE
 
     def mark_unknown(self, pose: tuple[float, float, float], ranges_m: np.ndarray, cells: np.ndarray) -> int:
@@ -344,15 +325,26 @@ class FreeSpaceMarker:
                 f"FreeSpaceMarker of shape {self.shape} needs uint8 cells of that shape, got {cells.dtype} {cells.shape}"
             )
         unknown_bits(cells, self._unknown)
+        return self._sweep(pose, ranges_m, cells, self._counted, self._unknown)
+
+    def _sweep(
+        self,
+        pose: tuple[float, float, float],
+        ranges_m: np.ndarray,
+        grid: np.ndarray,
+        targets: np.ndarray,
+        todo: np.ndarray,
+    ) -> int:
+        """Mark free in ``grid`` the cells of ``todo`` the scan sweeps; the marked ``TRUTH_REACHABLE`` ones."""
         x, y, theta = pose
         res = self.resolution_m
         return int(
             integrate_scan(
-                cells,
+                grid,
                 self._pooled,
                 self._pool,
-                self._counted,
-                self._unknown,
+                targets,
+                todo,
                 self._bits.walls,
                 x / res,
                 y / res,

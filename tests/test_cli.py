@@ -300,11 +300,13 @@ def test_convert__folder_mistakes_are_one_line(plans_with_broken, tiny_office, t
     assert not (tmp_path / "o").exists()
 
 
-def test_checkout_commit__is_the_head_of_a_git_checkout_and_none_elsewhere(tmp_path):
+def test_checkout_commit__is_the_head_of_a_git_checkout_and_none_elsewhere(tmp_path, monkeypatch):
     import shutil
 
     from realistic_indoor.cli import checkout_commit
 
+    monkeypatch.setenv("GIT_CEILING_DIRECTORIES", str(tmp_path))  # a checkout around tmp_path is not searched
+    monkeypatch.delenv("GIT_DIR", raising=False)
     outside = tmp_path / "plain"
     outside.mkdir()
     assert checkout_commit(outside) is None

@@ -118,18 +118,21 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 def main(argv: list[str] | None = None) -> int:
     from realistic_indoor.cli import checkout_commit
+    from realistic_indoor.errors import ConfigError
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
     from realistic_indoor.files import write_text
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = Path(args.out) if args.out else RUNS
+    if args.report_only:
+        if args.small and not args.out:
+            raise ConfigError("--report-only --small needs --out: the folder the small run wrote to")
+        return report_only(out)
     if args.small and not args.out:
         # A smoke run must not overwrite the committed results or leave smoke models there.
         out = Path(tempfile.mkdtemp(prefix="realistic_vs_random_small_"))
         print(f"--small without --out: writing to {out}", flush=True)
-    if args.report_only:
-        return report_only(out)
     agents = dict(BASELINES)
     if not args.no_ppo:
         models = Path(args.models) if args.models else (out if args.small else RESULTS)

@@ -61,3 +61,10 @@ def test_realistic_vs_random__report_regenerates_byte_for_byte(small_run):
     first = (small_run / "realistic_vs_random.md").read_bytes()
     assert _load().main(["--small", "--out", str(small_run), "--report-only"]) == 0
     assert (small_run / "realistic_vs_random.md").read_bytes() == first
+
+
+def test_realistic_vs_random__report_only_of_a_small_run_needs_its_folder():
+    from realistic_indoor.errors import ConfigError
+
+    with pytest.raises(ConfigError, match="needs --out"):
+        _load().main(["--report-only", "--small"])

@@ -94,3 +94,10 @@ def test_step_definition__report_gives_lighter_minus_default_per_seed_and_the_ra
     assert "- **offices, default**: frontier > wall follower" in report
     assert "- **offices, light**: wall follower > frontier (Kendall tau to the default's: -1.00)" in report
     assert "| default | 400 | 200 | 1 | 3 |" in report  # 4 episodes of 100 steps, 2 ms each
+
+
+def test_step_definition__report_only_of_a_small_run_needs_its_folder():
+    from realistic_indoor.errors import ConfigError
+
+    with pytest.raises(ConfigError, match="needs --out"):
+        _load().main(["--report-only", "--small"])

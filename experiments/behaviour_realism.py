@@ -23,9 +23,7 @@ tiny generated plans (or the first two of PLANS), with 60-step episodes (the tes
 from __future__ import annotations
 
 import argparse
-import shlex
 import sys
-import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -83,13 +81,15 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.cli import checkout_commit
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.evaluation.twins import behaviour_realism, shown_path
     from realistic_indoor.validator.plan_sets import show_progress
 
     args = parse_args(argv)
-    out = _out_dir(args)
+    out = run_folder(
+        args.out, RUNS / args.type, small=args.small, report_only=args.report_only, name="behaviour_realism"
+    )
     if args.report_only:
         return report_only(out)
     plans = args.plans
@@ -110,7 +110,10 @@ def main(argv: list[str] | None = None) -> int:
         strict=args.strict,
         resume=args.resume,
         progress=show_progress(),
-        meta={"command": _command(argv), "commit": checkout_commit(ROOT)},
+        meta={
+            "command": script_command("experiments/behaviour_realism.py", argv),
+            "commit": checkout_commit(ROOT),
+        },
         twins_per_plan=args.twins,
     )
     print((out / "behaviour_realism.md").read_text(encoding="utf-8"))
@@ -121,17 +124,6 @@ def main(argv: list[str] | None = None) -> int:
 def _given(value: int | None, default: int | None) -> int | None:
     """An option's value, or ``default`` when it was not given."""
     return default if value is None else value
-
-
-def _out_dir(args: argparse.Namespace) -> Path:
-    """``--out``, or the default folder (a new temporary one for ``--small``)."""
-    if args.out:
-        return Path(args.out)
-    if args.small:
-        out = Path(tempfile.mkdtemp(prefix="behaviour_realism_small_"))
-        print(f"--small without --out: writing to {out}", flush=True)
-        return out
-    return RUNS / args.type
 
 
 def tiny_plans(folder: Path, building_type: str) -> Path:
@@ -157,12 +149,6 @@ def report_only(out: Path) -> int:
     write_outputs(load_study(out / "behaviour_realism.json"), out)
     print((out / "behaviour_realism.md").read_text(encoding="utf-8"))
     return 0
-
-
-def _command(argv: list[str] | None) -> str:
-    """The command line that ran, as the report shows it."""
-    given = sys.argv[1:] if argv is None else argv
-    return " ".join([".venv/bin/python experiments/behaviour_realism.py", *map(shlex.quote, given)])
 
 
 if __name__ == "__main__":

@@ -28,9 +28,7 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import shlex
 import sys
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -117,22 +115,17 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.cli import checkout_commit
-    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
     from realistic_indoor.files import write_text
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
-    out = Path(args.out) if args.out else RUNS
+    out = run_folder(
+        args.out, RUNS, small=args.small, report_only=args.report_only, name="realistic_vs_random"
+    )
     if args.report_only:
-        if args.small and not args.out:
-            raise ConfigError("--report-only --small needs --out: the folder the small run wrote to")
         return report_only(out)
-    if args.small and not args.out:
-        # A smoke run must not overwrite the committed results or leave smoke models there.
-        out = Path(tempfile.mkdtemp(prefix="realistic_vs_random_small_"))
-        print(f"--small without --out: writing to {out}", flush=True)
     agents = dict(BASELINES)
     if not args.no_ppo:
         models = Path(args.models) if args.models else (out if args.small else RESULTS)
@@ -143,8 +136,7 @@ def main(argv: list[str] | None = None) -> int:
     tasks += make_tasks(list(agents.values()), real, 1) if real else []
     results = run_tasks(tasks, workers=args.workers or setup.workers)
     relabel(results, agents)
-    given = sys.argv[1:] if argv is None else argv
-    command = " ".join([".venv/bin/python experiments/realistic_vs_random.py", *map(shlex.quote, given)])
+    command = script_command("experiments/realistic_vs_random.py", argv)
     meta = {
         "command": command,
         "commit": checkout_commit(ROOT),

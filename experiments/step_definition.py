@@ -29,9 +29,7 @@ from __future__ import annotations
 
 import argparse
 import math
-import shlex
 import sys
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -102,20 +100,14 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.cli import checkout_commit
-    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
-    out = Path(args.out) if args.out else RUNS
+    out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="step_definition")
     if args.report_only:
-        if args.small and not args.out:
-            raise ConfigError("--report-only --small needs --out: the folder the small run wrote to")
         return report_only(out)
-    if args.small and not args.out:
-        out = Path(tempfile.mkdtemp(prefix="step_definition_small_"))
-        print(f"--small without --out: writing to {out}", flush=True)
     episodes = args.episodes or setup.episodes
     results, wall_s = [], {}
     for definition in DEFINITIONS:
@@ -126,10 +118,8 @@ def main(argv: list[str] | None = None) -> int:
     names = {name: label for label, name in AGENTS.items()}
     for r in results:
         r.agent = names[r.agent]
-    given = sys.argv[1:] if argv is None else argv
-    command = " ".join([".venv/bin/python experiments/step_definition.py", *map(shlex.quote, given)])
     meta = {
-        "command": command,
+        "command": script_command("experiments/step_definition.py", argv),
         "commit": checkout_commit(ROOT),
         "episodes": episodes,
         "definitions": DEFINITIONS,

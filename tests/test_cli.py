@@ -325,3 +325,28 @@ def test_checkout_commit__is_the_head_of_a_git_checkout_and_none_elsewhere(tmp_p
     ).stdout.strip()
     assert checkout_commit(repo) == logged
     assert len(logged) == 40
+
+
+def test_run_folder__out_else_the_default_and_a_new_temporary_folder_for_a_small_run(tmp_path, capsys):
+    from realistic_indoor.cli import run_folder
+
+    default = tmp_path / "runs"
+    assert (
+        run_folder(str(tmp_path / "mine"), default, small=True, report_only=True, name="x")
+        == tmp_path / "mine"
+    )
+    assert run_folder(None, default, small=False, report_only=True, name="x") == default
+    first = run_folder(None, default, small=True, report_only=False, name="exp")
+    second = run_folder(None, default, small=True, report_only=False, name="exp")
+    assert first != second and first.is_dir() and second.is_dir()
+    assert first.name.startswith("exp_small_") and not any(first.iterdir())
+    assert f"writing to {first}" in capsys.readouterr().out
+    with pytest.raises(ConfigError, match="--report-only --small needs --out"):
+        run_folder(None, default, small=True, report_only=True, name="exp")
+
+
+def test_script_command__quotes_what_needs_it():
+    from realistic_indoor.cli import script_command
+
+    command = script_command("experiments/x.py", ["--out", "a b", "--small"])
+    assert command == ".venv/bin/python experiments/x.py --out 'a b' --small"

@@ -11,14 +11,16 @@ import argparse
 import importlib
 import os
 import pkgutil
+import shlex
 import sys
 import warnings
 from collections.abc import Callable
+from pathlib import Path
 
 from realistic_indoor import __version__
-from realistic_indoor.errors import RealisticIndoorError
+from realistic_indoor.errors import ConfigError, RealisticIndoorError
 
-__all__ = ["build_parser", "checkout_commit", "main", "run_script"]
+__all__ = ["build_parser", "checkout_commit", "main", "run_folder", "run_script", "script_command"]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -61,6 +63,47 @@ def checkout_commit(folder: str | os.PathLike[str]) -> str | None:
     except (OSError, subprocess.CalledProcessError):
         return None
     return done.stdout.strip()
+
+
+def run_folder(out: str | None, default: Path, *, small: bool, report_only: bool, name: str) -> Path:
+    """The folder a script of ``experiments/`` writes its run to, or reads it from.
+
+    ``--out`` when given. Otherwise a full run uses ``default``, and a ``--small`` (smoke) run a
+    new temporary folder, named after the script, so that it never overwrites a full run's results
+    (nor leaves smoke-trained models beside them).
+
+    Args:
+        out: The script's ``--out``, ``None`` if not given.
+        default: The full run's folder.
+        small: Whether this is a ``--small`` run.
+        report_only: Whether the run is only read again (``--report-only``).
+        name: The script's name, for the temporary folder's.
+
+    Raises:
+        ConfigError: For ``--report-only --small`` without ``--out``: there is no small run to read.
+    """
+    if out:
+        return Path(out)
+    if not small:
+        return default
+    if report_only:
+        raise ConfigError("--report-only --small needs --out: the folder the small run wrote to")
+    import tempfile
+
+    folder = Path(tempfile.mkdtemp(prefix=f"{name}_small_"))
+    print(f"--small without --out: writing to {folder}", flush=True)
+    return folder
+
+
+def script_command(script: str, argv: list[str] | None) -> str:
+    """The command line that ran ``script`` (a path from the project's root), as reports show it.
+
+    Args:
+        script: E.g. ``experiments/step_definition.py``.
+        argv: The arguments given to the script's ``main``; ``None`` for the process's own.
+    """
+    given = sys.argv[1:] if argv is None else argv
+    return " ".join([f".venv/bin/python {script}", *map(shlex.quote, given)])
 
 
 def run_script(main_fn: Callable[[], int | None], name: str) -> int:

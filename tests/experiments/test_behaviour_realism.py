@@ -401,3 +401,10 @@ def test_small_run__one_twin_per_plan_keeps_the_one_twin_wording(small_run):
     report = (small_run[0] / "behaviour_realism.md").read_text()
     assert "- Twins: one generated office building per plan with the plan's floor area" in report
     assert "each plan's twin minus the plan" in report and "cut-off pair" in report
+
+
+def test_behaviour_realism__report_only_of_a_small_run_needs_its_folder():
+    from realistic_indoor.errors import ConfigError
+
+    with pytest.raises(ConfigError, match="needs --out"):
+        _load().main(["--report-only", "--small"])

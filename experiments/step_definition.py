@@ -33,6 +33,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from statistics import fmean
 from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -173,6 +174,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
     """The report: coverage AUC and paired differences, rankings, where the time went."""
     definitions = list(meta["definitions"])
     lighter = [d for d in definitions if d != REFERENCE]
+    places = {group_name(s, d): (s, d) for s in SETS for d in definitions}
     lines = [
         "# A lighter robot-step: what it changes",
         "",
@@ -190,7 +192,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
         "",
         "## Coverage AUC",
         "",
-        *_auc_table(results, definitions, lighter),
+        *_auc_table(results, places, lighter),
         "",
         "## Rankings by coverage AUC",
         "",
@@ -198,7 +200,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
         "",
         "## Where the time went",
         "",
-        *_time_table(results, meta, definitions),
+        *_time_table(results, meta, definitions, places),
     ]
     return "\n".join(lines) + "\n"
 
@@ -207,20 +209,20 @@ def _kwargs_text(kwargs: dict[str, Any]) -> str:
     return ", ".join(f"{k}={v}" for k, v in kwargs.items()) or "(none)"
 
 
-def _auc_table(results: list, definitions: list[str], lighter: list[str]) -> list[str]:
+def _auc_table(results: list, places: dict[str, tuple[str, str]], lighter: list[str]) -> list[str]:
     from realistic_indoor.evaluation.aggregate import bootstrap_mean
 
     head = ["set", "agent", REFERENCE]
     for d in lighter:
         head += [d, "difference"]
     lines = ["| " + " | ".join(head) + " |", "|---" * len(head) + "|"]
-    values = _values(results, definitions)
+    values = _values(results, places)
     for set_label in SETS:
         for agent in AGENTS:
             base = values.get((set_label, REFERENCE, agent), {})
             if not base:
                 continue
-            cells = [set_label, agent, f"{_mean(base.values()):.3f}"]
+            cells = [set_label, agent, f"{fmean(base.values()):.3f}"]
             for d in lighter:
                 other = values.get((set_label, d, agent), {})
                 seeds = [s for s in base if s in other]
@@ -230,32 +232,27 @@ def _auc_table(results: list, definitions: list[str], lighter: list[str]) -> lis
                 diff = bootstrap_mean([other[s] - base[s] for s in seeds])
                 apart = diff.n > 1 and (diff.low > 0 or diff.high < 0)
                 cells += [
-                    f"{_mean(other.values()):.3f}",
+                    f"{fmean(other.values()):.3f}",
                     f"{diff.mean:+.3f} [{diff.low:+.3f}, {diff.high:+.3f}]{' *' if apart else ''}",
                 ]
             lines.append("| " + " | ".join(cells) + " |")
     return lines
 
 
-def _values(results: list, definitions: list[str]) -> dict[tuple[str, str, str], dict[int, float]]:
-    """Coverage AUC by ``(set, definition, agent)`` and seed."""
+def _values(
+    results: list, places: dict[str, tuple[str, str]]
+) -> dict[tuple[str, str, str], dict[int, float]]:
+    """Coverage AUC by ``(set, definition, agent)`` and seed.
+
+    Args:
+        results: The episodes.
+        places: ``(set, definition)`` of each group (:func:`group_name`); other groups are left out.
+    """
     out: dict[tuple[str, str, str], dict[int, float]] = {}
     for r in results:
-        where = _set_and_definition(r.group, definitions)
-        if where:
-            out.setdefault((*where, r.agent), {})[r.seed] = float(getattr(r, METRIC))
+        if r.group in places:
+            out.setdefault((*places[r.group], r.agent), {})[r.seed] = float(getattr(r, METRIC))
     return out
-
-
-def _set_and_definition(group: str, definitions: list[str]) -> tuple[str, str] | None:
-    """The set and the definition of a results' group (:func:`group_name`); ``None`` for another group."""
-    names = {group_name(s, d): (s, d) for s in SETS for d in definitions}
-    return names.get(group)
-
-
-def _mean(values) -> float:
-    values = list(values)
-    return sum(values) / len(values)
 
 
 def _rankings(results: list, definitions: list[str]) -> list[str]:
@@ -276,7 +273,9 @@ def _rankings(results: list, definitions: list[str]) -> list[str]:
     return lines
 
 
-def _time_table(results: list, meta: dict[str, Any], definitions: list[str]) -> list[str]:
+def _time_table(
+    results: list, meta: dict[str, Any], definitions: list[str], places: dict[str, tuple[str, str]]
+) -> list[str]:
     workers = meta.get("workers")
     lines = [
         "Steps of every episode (and of the map-based explorers', which stop at 90% coverage; the "
@@ -289,7 +288,7 @@ def _time_table(results: list, meta: dict[str, Any], definitions: list[str]) -> 
         "|---|---:|---:|---:|---:|",
     ]
     for d in definitions:
-        mine = [r for r in results if (_set_and_definition(r.group, definitions) or ("", ""))[1] == d]
+        mine = [r for r in results if r.group in places and places[r.group][1] == d]
         steps = sum(r.steps for r in mine)
         explorers = sum(r.steps for r in mine if r.agent in MAP_EXPLORERS)
         thinking = sum(r.agent_ms_per_step * r.steps for r in mine) / 1000.0

@@ -19,7 +19,6 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
     MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
-    TRUTH_FREE,
     TRUTH_REACHABLE,
     integrate_scan,
     map_targets,
@@ -280,14 +279,12 @@ class FreeSpaceMarker:
         self.resolution_m = resolution_m
         self._cos, self._sin, self._closed = beam_table(offsets)
         self._kind = np.full(len(offsets), RASTER_FREE, dtype=np.uint8)  # no beam marks a wall
-        self._targets = np.full(self.shape, TRUTH_FREE, dtype=np.uint8)
-        self._bits = MapBits(self._targets)  # no cell is a wall
+        # every cell may be free and none is a wall; each cell marked counts (mark_unknown's count)
+        self._targets = np.full(self.shape, TRUTH_REACHABLE, dtype=np.uint8)
+        self._bits = MapBits(self._targets)
         self._grid = np.zeros(self.shape, dtype=np.uint8)
         self._pool = max(self.shape)  # one pooled cell: the kernel keeps a pooled copy, unused here
         self._pooled = np.zeros((1, 1), dtype=np.uint8)
-        self._counted = np.full(
-            self.shape, TRUTH_REACHABLE, dtype=np.uint8
-        )  # the kernel counts each cell marked
         self._unknown = np.empty_like(self._bits.todo)
 
     def free(self, pose: tuple[float, float, float], ranges_m: np.ndarray) -> np.ndarray:
@@ -305,7 +302,7 @@ class FreeSpaceMarker:
         """
         self._grid.fill(MAPPED_UNKNOWN)
         self._bits.reset()
-        self._sweep(pose, ranges_m, self._grid, self._targets, self._bits.todo)
+        self._sweep(pose, ranges_m, self._grid, self._bits.todo)
         return self._grid == MAPPED_FREE
 
     def mark_unknown(self, pose: tuple[float, float, float], ranges_m: np.ndarray, cells: np.ndarray) -> int:
@@ -325,17 +322,16 @@ class FreeSpaceMarker:
                 f"FreeSpaceMarker of shape {self.shape} needs uint8 cells of that shape, got {cells.dtype} {cells.shape}"
             )
         unknown_bits(cells, self._unknown)
-        return self._sweep(pose, ranges_m, cells, self._counted, self._unknown)
+        return self._sweep(pose, ranges_m, cells, self._unknown)
 
     def _sweep(
         self,
         pose: tuple[float, float, float],
         ranges_m: np.ndarray,
         grid: np.ndarray,
-        targets: np.ndarray,
         todo: np.ndarray,
     ) -> int:
-        """Mark free in ``grid`` the cells of ``todo`` the scan sweeps; the marked ``TRUTH_REACHABLE`` ones."""
+        """Mark free in ``grid`` the cells of ``todo`` the scan sweeps; return how many."""
         x, y, theta = pose
         res = self.resolution_m
         return int(
@@ -343,7 +339,7 @@ class FreeSpaceMarker:
                 grid,
                 self._pooled,
                 self._pool,
-                targets,
+                self._targets,
                 todo,
                 self._bits.walls,
                 x / res,

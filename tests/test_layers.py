@@ -112,11 +112,11 @@ def test_checker__flags_what_the_rules_forbid():
         "    from realistic_indoor.envs.config import EnvConfig\n"
         "def f():\n"
         "    from realistic_indoor.sim import _edt\n"
-        "    from ..agents import planning\n"
+        "    from ..agents import explorer\n"
     )
     edges = imports_in(source, "realistic_indoor.generator.functions", False, KNOWN)
     # validator is beside generator (allowed); envs is a type hint only; agents is above
-    assert upward("realistic_indoor.generator.functions", edges) == ["realistic_indoor.agents.planning"]
+    assert upward("realistic_indoor.generator.functions", edges) == ["realistic_indoor.agents.explorer"]
     assert "realistic_indoor.envs.config" not in [dst for dst, _, _ in edges]
     assert ("realistic_indoor.sim._edt", "_edt", 6) in edges
     assert _owner("realistic_indoor.sim._edt", "") == "realistic_indoor.sim"

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import numpy as np
-
 from realistic_indoor.agents.explorer import MapExplorer, PlanContext
-from realistic_indoor.agents.frontiers import Frontiers
-from realistic_indoor.agents.planning import dijkstra
+from realistic_indoor.navigation.frontiers import Frontiers
+from realistic_indoor.navigation.goals import nearest_frontier
+from realistic_indoor.navigation.navigator import Found
 
 __all__ = ["FrontierAgent"]
 
@@ -20,7 +19,7 @@ class FrontierAgent(MapExplorer):
     robot's radius kept from walls), found by one Dijkstra search that stops at the first
     frontier cell it settles; frontiers it cannot reach are never found by that search, and goals it
     makes no progress towards are blacklisted (see
-    :class:`~realistic_indoor.agents.explorer.MapExplorer` for the loop and the settings).
+    :class:`~realistic_indoor.navigation.navigator.Navigator` for the loop and the settings).
 
     Args:
         spec: The robot's sensors and limits.
@@ -29,6 +28,5 @@ class FrontierAgent(MapExplorer):
 
     name = "frontier"
 
-    def _choose(self, frontiers: Frontiers, ctx: PlanContext) -> tuple[int, np.ndarray] | None:
-        _, parent, goal = dijkstra(ctx.cost, ctx.start, frontiers.mask, first_only=True)
-        return None if goal < 0 else (goal, parent)
+    def _choose(self, frontiers: Frontiers, ctx: PlanContext) -> Found | None:
+        return nearest_frontier(frontiers, ctx)

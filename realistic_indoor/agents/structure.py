@@ -8,12 +8,12 @@ import numpy as np
 
 from realistic_indoor.agents.base import RobotSpec
 from realistic_indoor.agents.explorer import ExplorerConfig, MapExplorer, PlanContext
-from realistic_indoor.agents.frontiers import Frontiers
-from realistic_indoor.agents.planning import dijkstra
-from realistic_indoor.agents.regions import RegionConfig, Regions, find_regions
-from realistic_indoor.agents.utility import frontier_costs
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.navigation.frontiers import Frontiers
+from realistic_indoor.navigation.goals import frontier_costs
+from realistic_indoor.navigation.planning import dijkstra
+from realistic_indoor.navigation.regions import RegionConfig, Regions, find_regions
 
 __all__ = ["StructureAgent", "StructureConfig"]
 
@@ -48,7 +48,7 @@ class StructureAgent(MapExplorer):
 
     Real buildings, unlike random ones, are organised around their circulation: in an office
     nearly every room opens on a corridor. This explorer recognises corridors and halls on its
-    own map by the shape of the free space (:func:`~realistic_indoor.agents.regions.find_regions`:
+    own map by the shape of the free space (:func:`~realistic_indoor.navigation.regions.find_regions`:
     the known floor split at doorways, each part classified as long and thin, wide, or neither)
     and goes to the frontier with the lowest path cost, where a frontier in a room costs
     ``room_factor`` times its path. Sweeping the corridors first maps the building's skeleton

@@ -9,12 +9,13 @@ from scipy import ndimage
 
 from realistic_indoor.agents.base import RobotSpec
 from realistic_indoor.agents.explorer import ExplorerConfig, MapExplorer, PlanContext
-from realistic_indoor.agents.frontiers import Frontiers
-from realistic_indoor.agents.planning import dijkstra
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.navigation.frontiers import Frontiers
+from realistic_indoor.navigation.goals import frontier_costs
+from realistic_indoor.navigation.planning import dijkstra
 
-__all__ = ["UtilityConfig", "UtilityFrontierAgent", "frontier_costs"]
+__all__ = ["UtilityConfig", "UtilityFrontierAgent"]
 
 GAINS = ("length", "area")
 """Information-gain estimates :class:`UtilityConfig` accepts."""
@@ -105,34 +106,3 @@ class UtilityFrontierAgent(MapExplorer):
         best = np.zeros(frontiers.count + 1)
         np.maximum.at(best, frontiers.labels[rows, cols], area[rows, cols])
         return best[1:] * (2 * k + 1) ** 2 * res**2
-
-
-def frontier_costs(
-    frontiers: Frontiers, ctx: PlanContext, max_cost_m: float = np.inf
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Path cost to each frontier, from one Dijkstra search from the robot.
-
-    Args:
-        frontiers: The frontiers.
-        ctx: The planning window.
-        max_cost_m: Frontiers farther than this (path cost in metres of clear floor) count as
-            unreachable; a bound keeps the search small.
-
-    Returns:
-        ``(costs, cells, parent)``: per frontier (``count``,) the path cost to its nearest cell
-        in metres of clear floor (``inf`` if unreachable) and that cell's flat index (-1 if
-        unreachable), and the Dijkstra parent array for :func:`trace_path`.
-    """
-    dist, parent, _ = dijkstra(ctx.cost, ctx.start, frontiers.mask, False, max_cost_m / ctx.resolution_m)
-    flat = np.flatnonzero(frontiers.mask)
-    d = dist.ravel()[flat]
-    lab = frontiers.labels.ravel()[flat]
-    order = np.lexsort((d, lab))
-    first = order[np.r_[True, np.diff(lab[order]) != 0]]  # the nearest cell of each frontier
-    costs = np.full(frontiers.count, np.inf)
-    cells = np.full(frontiers.count, -1, dtype=np.int64)
-    costs[lab[first] - 1] = d[first]
-    reached = np.isfinite(costs)
-    cells[lab[first] - 1] = flat[first]
-    cells[~reached] = -1
-    return costs * ctx.resolution_m, cells, parent

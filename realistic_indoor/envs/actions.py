@@ -8,21 +8,12 @@ import numpy as np
 from gymnasium import spaces
 
 from realistic_indoor.errors import ActionError
+from realistic_indoor.navigation.spec import DISCRETE_ACTIONS
 
 __all__ = ["ACTION_TYPES", "DISCRETE_ACTIONS", "ActionMap"]
 
 ACTION_TYPES = ("continuous", "discrete")
 """Names accepted by :attr:`EnvConfig.action_type`."""
-
-DISCRETE_ACTIONS: tuple[tuple[str, float, float], ...] = (
-    ("forward", 1.0, 0.0),
-    ("forward-left", 0.5, 0.5),
-    ("forward-right", 0.5, -0.5),
-    ("turn-left", 0.0, 1.0),
-    ("turn-right", 0.0, -1.0),
-    ("back", -0.5, 0.0),
-)
-"""The discrete action set: name, linear and angular velocity as fractions of the limits."""
 
 _NAMES = ", ".join(name for name, _, _ in DISCRETE_ACTIONS)
 

@@ -5,7 +5,7 @@ import numpy as np
 from agent_helpers import drive
 
 from realistic_indoor.agents import make_agent
-from realistic_indoor.agents.occupancy import OwnMap
+from realistic_indoor.navigation.own_map import OwnMap
 from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, MAPPED_UNKNOWN
 from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE
 

@@ -4,11 +4,11 @@ import pytest
 from agent_helpers import drive, hall_and_corridor
 
 from realistic_indoor.agents import make_agent
-from realistic_indoor.agents.planning import clearance
-from realistic_indoor.agents.regions import CORRIDOR_REGION, HALL_REGION, ROOM_REGION, find_regions
 from realistic_indoor.agents.structure import StructureConfig
 from realistic_indoor.agents.utility import UtilityConfig
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.navigation.planning import clearance
+from realistic_indoor.navigation.regions import CORRIDOR_REGION, HALL_REGION, ROOM_REGION, find_regions
 from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED
 
 

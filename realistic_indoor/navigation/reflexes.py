@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from realistic_indoor.agents.base import RobotSpec
-from realistic_indoor.agents.occupancy import OwnMap
+from realistic_indoor.navigation.own_map import OwnMap
+from realistic_indoor.navigation.spec import RobotSpec
 from realistic_indoor.sim.lidar import beam_offsets
 from realistic_indoor.sim.mapping import MAPPED_FREE
 

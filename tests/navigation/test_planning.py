@@ -2,8 +2,8 @@ import math
 
 import numpy as np
 
-from realistic_indoor.agents.frontiers import find_frontiers
-from realistic_indoor.agents.planning import CostConfig, clearance, costmap, dijkstra, trace_path
+from realistic_indoor.navigation.frontiers import find_frontiers
+from realistic_indoor.navigation.planning import CostConfig, clearance, costmap, dijkstra, trace_path
 from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED, MAPPED_UNKNOWN
 
 

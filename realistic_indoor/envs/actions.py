@@ -10,10 +10,13 @@ from gymnasium import spaces
 from realistic_indoor.errors import ActionError
 from realistic_indoor.navigation.spec import DISCRETE_ACTIONS
 
-__all__ = ["ACTION_TYPES", "DISCRETE_ACTIONS", "ActionMap"]
+__all__ = ["ACTION_TYPES", "DISCRETE_ACTIONS", "PRIMITIVE_ACTION_TYPES", "ActionMap", "discrete_index"]
 
-ACTION_TYPES = ("continuous", "discrete")
-"""Names accepted by :attr:`EnvConfig.action_type`."""
+PRIMITIVE_ACTION_TYPES = ("continuous", "discrete")
+"""Action types whose action is a velocity command (:class:`ActionMap`)."""
+ACTION_TYPES = (*PRIMITIVE_ACTION_TYPES, "frontier")
+"""Names accepted by :attr:`EnvConfig.action_type`; ``"frontier"`` chooses a goal
+(:mod:`realistic_indoor.envs.macro`)."""
 
 _NAMES = ", ".join(name for name, _, _ in DISCRETE_ACTIONS)
 
@@ -65,10 +68,9 @@ class ActionMap:
                 not an integer or not in ``0..5``.
         """
         if self.discrete:
-            k = action if type(action) is int else self._index(action)
-            if 0 <= k < len(self._table):
-                return self._table[k]
-            raise ActionError(f"discrete action must be in 0..{len(self._table) - 1} ({_NAMES}), got {k}")
+            if type(action) is int and 0 <= action < len(self._table):
+                return self._table[action]  # the common case, fast
+            return self._table[discrete_index(action, len(self._table), "discrete action", _NAMES)]
         if type(action) is np.ndarray and action.shape == (2,) and action.dtype.kind == "f":
             a, b = action.tolist()  # the common case, fast: Python floats without NumPy scalars
         else:
@@ -96,17 +98,32 @@ class ActionMap:
                 f"continuous action must be 2 numbers (linear, turn) in [-1, 1], got {action!r}"
             ) from None
 
-    @staticmethod
-    def _index(action: object) -> int:
-        """A discrete action as an ``int`` (its range is checked by the caller)."""
-        if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
-            return int(action)
-        if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
-            return int(action)
+
+def discrete_index(action: object, n: int, what: str, names: str) -> int:
+    """A discrete action as an ``int`` in ``0..n-1``: a Python or NumPy integer, or a 0-d integer array.
+
+    Floats and booleans are refused rather than rounded.
+
+    Args:
+        action: The action.
+        n: Number of actions.
+        what: What the action is, for the message (``"discrete action"``).
+        names: What the actions mean, for the message (``"forward, forward-left, ..."``).
+
+    Raises:
+        ActionError: If ``action`` is not an integer, or not in ``0..n-1``.
+    """
+    if (isinstance(action, (int, np.integer)) and not isinstance(action, (bool, np.bool_))) or (
+        isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu"
+    ):
+        k = int(action)
+    else:
         raise ActionError(
-            f"discrete action must be an integer in 0..{len(DISCRETE_ACTIONS) - 1} ({_NAMES}), "
-            f"got {action!r} of type {type(action).__name__}"
+            f"{what} must be an integer in 0..{n - 1} ({names}), got {action!r} of type {type(action).__name__}"
         )
+    if not 0 <= k < n:
+        raise ActionError(f"{what} must be in 0..{n - 1} ({names}), got {k}")
+    return k
 
 
 def _shape(action: object) -> tuple[int, ...] | str | None:

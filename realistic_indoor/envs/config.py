@@ -9,6 +9,7 @@ from typing import Any
 
 from realistic_indoor.checks import require_int, require_range
 from realistic_indoor.envs.actions import ACTION_TYPES
+from realistic_indoor.envs.macro import MacroConfig
 from realistic_indoor.envs.rewards import RewardWeights
 from realistic_indoor.envs.source import (
     GENERATED_KEYWORDS,
@@ -37,6 +38,7 @@ _SUBCONFIGS = {
     "local_map": LocalMapConfig,
     "rewards": RewardWeights,
     "victims": VictimConfig,
+    "macro": MacroConfig,
 }
 
 
@@ -74,8 +76,12 @@ class EnvConfig:
             which ends when every victim is found, refuses it).
         max_steps: Control steps after which an episode is truncated (``1 / robot.control_hz``
             s each).
-        action_type: ``"continuous"`` (``Box(-1, 1, (2,))``) or ``"discrete"``
-            (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`).
+        action_type: ``"continuous"`` (``Box(-1, 1, (2,))``), ``"discrete"``
+            (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`) or ``"frontier"``
+            (``Discrete(macro.n_candidates)``: a candidate goal, driven to by the explorers'
+            navigator; :mod:`realistic_indoor.envs.macro`).
+        macro: Candidates per decision and the navigator's settings, for
+            ``action_type="frontier"`` (ignored otherwise).
     """
 
     source: BuildingSource = field(default_factory=GeneratedBuildings)
@@ -88,6 +94,7 @@ class EnvConfig:
     coverage_target: float = 0.9
     max_steps: int = 1000
     action_type: str = "continuous"
+    macro: MacroConfig = field(default_factory=MacroConfig)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "source", as_source(self.source))
@@ -108,7 +115,7 @@ class EnvConfig:
     def replace(self, **changes: Any) -> EnvConfig:
         """A copy with some fields changed (checked again).
 
-        A sub-config (``world``, ``robot``, ``lidar``, ``local_map``, ``rewards``, ``victims``)
+        A sub-config (``world``, ``robot``, ``lidar``, ``local_map``, ``rewards``, ``victims``, ``macro``)
         may be given as a mapping of the fields to change in it, e.g.
         ``replace(lidar={"n_beams": 64})``. The older source keywords (``building_type``,
         ``area_m2``, ``generator_params``, ``generator``, ``building``, ``plan_path``) change

@@ -11,11 +11,13 @@ from gymnasium import spaces
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
+from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, FrontierActions
 from realistic_indoor.envs.observations import explore_observations
-from realistic_indoor.envs.rewards import reward_terms, weighted_sum
+from realistic_indoor.envs.rewards import auc_weight, reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
 from realistic_indoor.envs.source import episode_building
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.navigation.spec import RobotSpec
 
 __all__ = ["ExploreEnv"]
 
@@ -51,6 +53,12 @@ class ExploreEnv(gym.Env):
     ``6``, ``2.9``, ``True``) raises :class:`~realistic_indoor.errors.ActionError`.
     The robot reaches a command as fast as its acceleration limits allow.
 
+    With ``action_type="frontier"`` it is ``Discrete(macro.n_candidates)`` (16): a candidate goal
+    (in search the next detected victim, then the reachable frontiers, nearest first), driven
+    to by the map-based explorers' navigator until it would replan, over several primitive
+    steps (:mod:`realistic_indoor.envs.macro`); :meth:`action_masks` says which candidates
+    exist. Always choosing 0 drives as the nearest-frontier explorer does.
+
     ## Observation Space
 
     A ``Dict``:
@@ -63,7 +71,12 @@ class ExploreEnv(gym.Env):
     | `pose`      | `(3,)`           | float32 | (-1000, -1000, -pi) | (1000, 1000, pi) | odometry: x (m) along the start heading, y (m) to its left, heading (rad), relative to the start pose |
 
     ``S`` is ``local_map.size_px`` (64 by default, 0.2 m per pixel: a 12.8 m square). The
-    defaults give 109 beams over 270 degrees with a 10 m range.
+    defaults give 109 beams over 270 degrees with a 10 m range. With ``action_type="frontier"``
+    the dict adds ``candidates`` (``(K * 7,)`` float32: per candidate goal, whether it exists,
+    its path cost and distance in units of 10 m, the cosine and sine of its bearing, its
+    frontier length in units of 10 m, whether it is a victim;
+    :data:`~realistic_indoor.envs.macro.CANDIDATE_FEATURES`) and ``time_left`` (``(1,)``: the
+    share of the step limit still to come).
 
     ## Rewards
 
@@ -75,6 +88,11 @@ class ExploreEnv(gym.Env):
     | `new_area`  | reachable floor observed for the first time (m2) | 0.1 per m2  |
     | `collision` | 1 if the robot touched a wall during the step | -0.5           |
     | `time`      | 1 every step                                  | -0.01          |
+    | `coverage_auc` | coverage gain x ``(max_steps + 1 - t) / (max_steps + 1)`` at step ``t`` (only if weighted) | 0 |
+
+    With every weight 0 but ``coverage_auc`` (1), the undiscounted return is the episode's coverage
+    AUC minus the coverage at reset. With macro actions a step's reward and ``info["rewards"]``
+    sum its primitive steps'.
 
     ## Starting State
 
@@ -126,7 +144,8 @@ class ExploreEnv(gym.Env):
     | `rewards`         | `RewardWeights`      | see above   | weight of each reward term                    |
     | `coverage_target` | `float`              | 0.9         | coverage that ends the episode                |
     | `max_steps`       | `int`                | preset      | steps before truncation                       |
-    | `action_type`     | `str`                | continuous  | `"continuous"` or `"discrete"`                |
+    | `action_type`     | `str`                | continuous  | `"continuous"`, `"discrete"` or `"frontier"`  |
+    | `macro`           | `MacroConfig`        | 16 candidates | candidate goals per decision, navigator settings (`"frontier"` only) |
 
     ``victims`` (search only) is refused with a :class:`~realistic_indoor.errors.ConfigError`,
     as is any name that is not a field.
@@ -141,7 +160,9 @@ class ExploreEnv(gym.Env):
     ``path_length_m`` (distance driven), ``collisions`` (steps with a wall contact); after
     ``reset``, ``start_pose``: ``(x m, y m, heading rad)`` of the robot's start in the plan's
     frame (the building's coordinates, heading counter-clockwise from +x); after a step,
-    ``rewards``.
+    ``rewards``. With macro actions a step's ``info`` adds ``primitive_steps`` (control steps
+    the decision took), ``steps`` (control steps so far), ``choice`` (the candidate driven to)
+    and ``fallback`` (whether the chosen action was masked and candidate 0 taken instead).
 
     ```python
     >>> import gymnasium as gym
@@ -181,13 +202,22 @@ class ExploreEnv(gym.Env):
         self.metadata = {**self.metadata, "render_fps": self.config.robot.control_hz}
         self._source = self.config.source.generator()
         self._sim = self._make_simulation()
+        macro = self.config.action_type in MACRO_ACTION_TYPES
         self._actions = ActionMap(
-            self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
+            "continuous" if macro else self.config.action_type,
+            self.config.robot.max_speed_m_s,
+            self.config.robot.max_turn_rate_rad_s,
         )
-        self.action_space = self._actions.space
         self._observations = self._make_observations()
-        self.observation_space = spaces.Dict({k: o.space for k, o in self._observations.items()})
+        self._macro = self._make_macro() if macro else None
+        self.action_space = self._actions.space if self._macro is None else self._macro.space
+        obs_spaces = {k: o.space for k, o in self._observations.items()}
+        if self._macro is not None:
+            obs_spaces["candidates"] = self._macro.features_space()
+            obs_spaces["time_left"] = spaces.Box(0.0, 1.0, (1,), np.float32)
+        self.observation_space = spaces.Dict(obs_spaces)
         self._steps = 0
+        self._coverage = 0.0
         self._window = None
 
     # -- the Gymnasium API ----------------------------------------------------------------------
@@ -206,11 +236,16 @@ class ExploreEnv(gym.Env):
         self._sim.load(episode_building(self._source(self.np_random) if building is None else building))
         self._reset_simulation(options)
         self._steps = 0
+        self._coverage = self._sim.map.coverage
         info = self._info()
         info["start_pose"] = self._sim.world.start_pose
+        obs = self._observe()
+        if self._macro is not None:
+            self._macro.reset(obs, info)
+            obs = self._macro_observation(obs)
         if self.render_mode == "human":
             self.render()
-        return self._observe(), info
+        return obs, info
 
     def step(
         self, action: np.ndarray | int
@@ -223,10 +258,36 @@ class ExploreEnv(gym.Env):
         """
         if self._sim.world is None:
             raise gym.error.ResetNeeded("call reset() before step()")
+        if self._macro is not None:
+            return self._macro_step(action)
+        return self._primitive_step(action)
+
+    def action_masks(self) -> np.ndarray:
+        """Which actions are valid now, as sb3-contrib's ``MaskablePPO`` asks.
+
+        Returns:
+            With ``action_type="frontier"``, ``(K,)`` bool: the candidate goals that exist
+            (:meth:`~realistic_indoor.envs.macro.FrontierActions.action_masks`); with primitive
+            actions, every action (all ``True``: ``(6,)`` discrete, ``(2,)`` continuous).
+        """
+        if self._macro is not None:
+            return self._macro.action_masks()
+        return np.ones(self.action_space.shape or (int(self.action_space.n),), dtype=bool)
+
+    def _primitive_step(
+        self, action: np.ndarray | int
+    ) -> tuple[dict[str, np.ndarray], float, bool, bool, dict[str, Any]]:
+        """One control step with a velocity action (continuous or discrete)."""
         v, w = self._actions.command(action)
         outcome = self._sim.step(v, w, self.np_random)
         self._steps += 1
         terms = self._reward_terms(outcome)
+        coverage = self._sim.map.coverage
+        if self.config.rewards.coverage_auc != 0.0:
+            terms["coverage_auc"] = (coverage - self._coverage) * auc_weight(
+                self._steps, self.config.max_steps
+            )
+        self._coverage = coverage
         reward = weighted_sum(self.config.rewards, terms)
         terminated = self._terminated()
         truncated = self._steps >= self.config.max_steps
@@ -235,6 +296,37 @@ class ExploreEnv(gym.Env):
         if self.render_mode == "human":
             self.render()
         return self._observe(), reward, terminated, truncated, info
+
+    def _macro_step(self, action: object) -> tuple[dict[str, np.ndarray], float, bool, bool, dict[str, Any]]:
+        """One decision: commit to the chosen goal, then drive primitive steps to the next decision."""
+        macro = self._macro
+        chosen, fallback = macro.choose(action)
+        reward, steps, totals = 0.0, 0, {}
+        while True:
+            obs, r, terminated, truncated, info = self._primitive_step(macro.command())
+            reward += r
+            steps += 1
+            for name, value in info["rewards"].items():
+                totals[name] = totals.get(name, 0.0) + value
+            if terminated or truncated or macro.sense(obs, info):
+                break
+        info["rewards"] = totals
+        info["primitive_steps"] = steps
+        info["steps"] = self._steps
+        info["choice"] = chosen
+        info["fallback"] = fallback
+        return self._macro_observation(obs), reward, terminated, truncated, info
+
+    def _macro_observation(self, obs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        """A primitive observation with the candidate goals and the share of the step limit left."""
+        left = max(0.0, 1.0 - self._steps / self.config.max_steps)
+        return {**obs, "candidates": self._macro.features(), "time_left": np.array([left], dtype=np.float32)}
+
+    def _make_macro(self) -> FrontierActions:
+        """The macro actions' navigator, for the robot the observations describe."""
+        victims = self.config.victims if "victims" in self._observations else None
+        spec = RobotSpec(self.config.lidar, self.config.robot, victims, "continuous")
+        return FrontierActions(spec, self.config.macro)
 
     def render(self) -> np.ndarray | None:
         """A top view of the episode: the plan, the robot's map, the trajectory, the scan, the robot.
@@ -256,7 +348,8 @@ class ExploreEnv(gym.Env):
         from realistic_indoor.envs.render import top_view
 
         victims = self.victims
-        frame = top_view(self._sim, *victims) if victims is not None else top_view(self._sim)
+        marks = self._macro.marks(self._sim.world.start_pose) if self._macro is not None else {}
+        frame = top_view(self._sim, *(victims or (None, None)), **marks)
         if self.render_mode == "rgb_array":
             return frame
         if self._window is None:

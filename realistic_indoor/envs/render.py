@@ -44,12 +44,16 @@ COLOURS: dict[str, tuple[int, int, int]] = {
     "heading": (255, 255, 255),
     "victim": (220, 20, 60),
     "victim_found": (20, 160, 60),
+    "candidate": (170, 60, 200),
+    "goal": (255, 200, 0),
 }
 """RGB colour of each element of the view."""
 
 _PLAN_RANK = np.array([1, 2, 0], dtype=np.uint8)  # RASTER_FREE, RASTER_WALL, RASTER_OUTSIDE -> pooling rank
 _MAP_RANK = np.array([0, 1, 2], dtype=np.uint8)  # MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED
 _VICTIM_HALF_M = 0.2
+_CANDIDATE_HALF_M = 0.15
+_GOAL_HALF_M = 0.3
 
 
 @dataclass(frozen=True)
@@ -68,6 +72,8 @@ class Scene:
         radius_m: The robot's radius (m).
         victims_xy: ``(N, 2)`` victim positions (m), or ``None``.
         victims_found: ``(N,)`` bool, which victims have been found, or ``None``.
+        candidates_xy: ``(K, 2)`` candidate goals of a pending macro decision (m), or ``None``.
+        goal_xy: ``(2,)`` the goal being driven to (m), or ``None``.
     """
 
     raster: OccupancyRaster
@@ -81,10 +87,16 @@ class Scene:
     radius_m: float
     victims_xy: np.ndarray | None = None
     victims_found: np.ndarray | None = None
+    candidates_xy: np.ndarray | None = None
+    goal_xy: np.ndarray | None = None
 
 
 def top_view(
-    sim: Simulation, victims_xy: np.ndarray | None = None, victims_found: np.ndarray | None = None
+    sim: Simulation,
+    victims_xy: np.ndarray | None = None,
+    victims_found: np.ndarray | None = None,
+    candidates_xy: np.ndarray | None = None,
+    goal_xy: np.ndarray | None = None,
 ) -> np.ndarray:
     """The top view (:func:`draw`) of a single environment's episode.
 
@@ -92,6 +104,8 @@ def top_view(
         sim: The episode's simulation (after a reset).
         victims_xy: ``(N, 2)`` victim positions (m), if any.
         victims_found: ``(N,)`` bool, which victims have been found.
+        candidates_xy: ``(K, 2)`` candidate goals of a pending macro decision (m, plan frame).
+        goal_xy: ``(2,)`` the goal of the last macro decision (m, plan frame).
 
     Returns:
         An ``(H, W, 3)`` uint8 image (:func:`draw`).
@@ -108,6 +122,8 @@ def top_view(
         radius_m=sim.config.robot.radius_m,
         victims_xy=victims_xy,
         victims_found=victims_found,
+        candidates_xy=candidates_xy,
+        goal_xy=goal_xy,
     )
     return draw(scene)
 
@@ -118,7 +134,8 @@ def draw(scene: Scene) -> np.ndarray:
     North (+y) is up. Unseen floor is light grey, walls dark grey; what the robot has mapped is
     light blue (floor) and dark blue (walls); the trajectory is orange, the beams green with red
     returns, victims red squares (green once found), the robot a blue disc with a white
-    heading line.
+    heading line; with macro actions, the candidate goals small purple squares and the goal being
+    driven to a yellow one.
 
     Returns:
         An ``(H, W, 3)`` uint8 image, one pixel per raster cell (fewer when the raster is
@@ -133,6 +150,11 @@ def draw(scene: Scene) -> np.ndarray:
     _draw_scan(image, frame, scene)
     if scene.victims_xy is not None and len(scene.victims_xy):
         _draw_victims(image, frame, np.asarray(scene.victims_xy), scene.victims_found)
+    if scene.goal_xy is not None:
+        _draw_square(image, frame, np.asarray(scene.goal_xy, dtype=float), _GOAL_HALF_M, COLOURS["goal"])
+    if scene.candidates_xy is not None:
+        for xy in np.asarray(scene.candidates_xy, dtype=float).reshape(-1, 2):
+            _draw_square(image, frame, xy, _CANDIDATE_HALF_M, COLOURS["candidate"])
     _draw_robot(image, frame, scene.pose, scene.radius_m)
     return image
 
@@ -278,10 +300,18 @@ def _draw_robot(
 
 def _draw_victims(image: np.ndarray, frame: ViewFrame, xy: np.ndarray, found: np.ndarray | None) -> None:
     found = np.zeros(len(xy), bool) if found is None else np.asarray(found, bool)
-    half = _VICTIM_HALF_M / frame.pixel_m
-    for p, is_found in zip(frame.rc(xy), found, strict=True):
-        rows = np.arange(math.floor(p[0] - half), math.ceil(p[0] + half))
-        cols = np.arange(math.floor(p[1] - half), math.ceil(p[1] + half))
-        rr, cc = np.meshgrid(rows, cols, indexing="ij")
-        square = np.stack([rr.ravel(), cc.ravel()], axis=1).astype(float)
-        _put(image, square, COLOURS["victim_found" if is_found else "victim"])
+    for p, is_found in zip(xy, found, strict=True):
+        _draw_square(image, frame, p, _VICTIM_HALF_M, COLOURS["victim_found" if is_found else "victim"])
+
+
+def _draw_square(
+    image: np.ndarray, frame: ViewFrame, xy: np.ndarray, half_m: float, colour: tuple[int, int, int]
+) -> None:
+    """A filled square ``2 * half_m`` across centred on the point ``xy`` (m)."""
+    p = frame.rc(np.asarray(xy, dtype=float).reshape(1, 2))[0]
+    half = half_m / frame.pixel_m
+    rows = np.arange(math.floor(p[0] - half), math.ceil(p[0] + half))
+    cols = np.arange(math.floor(p[1] - half), math.ceil(p[1] + half))
+    rr, cc = np.meshgrid(rows, cols, indexing="ij")
+    square = np.stack([rr.ravel(), cc.ravel()], axis=1).astype(float)
+    _put(image, square, colour)

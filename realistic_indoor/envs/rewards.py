@@ -11,7 +11,7 @@ import numpy as np
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["RewardWeights", "reward_terms", "term_weights", "weighted_sum"]
+__all__ = ["RewardWeights", "auc_weight", "reward_terms", "term_weights", "weighted_sum"]
 
 
 @dataclass(frozen=True)
@@ -23,18 +23,30 @@ class RewardWeights:
         collision: Per control step in which the robot touched a wall.
         time: Per control step (a small cost makes fast exploration pay).
         victim: Per victim newly found (search environments only).
+        coverage_auc: Per unit of the step's coverage gain weighted by the share of the step
+            limit still to come, ``(max_steps + 1 - t) / (max_steps + 1)`` at step ``t``: with
+            weight 1 and the others 0 (:meth:`metric`), an episode's undiscounted return is its
+            coverage AUC (the evaluation's ``coverage_auc``) minus the coverage at reset. The
+            term is in ``info["rewards"]`` only where its weight is not 0; the native vector
+            environment refuses it.
     """
 
     new_area: float = 0.1
     collision: float = -0.5
     time: float = -0.01
     victim: float = 5.0
+    coverage_auc: float = 0.0
 
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
                 raise ConfigError(f"RewardWeights.{f.name} must be a finite number, got {value!r}")
+
+    @classmethod
+    def metric(cls) -> RewardWeights:
+        """The reward that is the metric: ``coverage_auc`` alone (weight 1, every other term 0)."""
+        return cls(new_area=0.0, collision=0.0, time=0.0, victim=0.0, coverage_auc=1.0)
 
 
 def reward_terms(new_area_m2: float, collided: bool, victims_found: int | None = None) -> dict[str, float]:
@@ -53,6 +65,16 @@ def reward_terms(new_area_m2: float, collided: bool, victims_found: int | None =
     if victims_found is not None:
         terms["victim"] = float(victims_found)
     return terms
+
+
+def auc_weight(step: int, max_steps: int) -> float:
+    """The weight of step ``step``'s coverage gain in the coverage AUC (1-based ``step``).
+
+    The evaluation's coverage AUC is the mean of the coverage after steps ``0..max_steps``
+    (held at its last value after an early end), so a gain at step ``t`` counts in the
+    ``max_steps + 1 - t`` means from ``t`` on.
+    """
+    return (max_steps + 1 - step) / (max_steps + 1)
 
 
 def weighted_sum(weights: RewardWeights, terms: Mapping[str, Any]) -> Any:

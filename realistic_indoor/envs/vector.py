@@ -20,7 +20,7 @@ from numba.typed import List
 
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
-from realistic_indoor.envs.actions import DISCRETE_ACTIONS, ActionMap
+from realistic_indoor.envs.actions import DISCRETE_ACTIONS, PRIMITIVE_ACTION_TYPES, ActionMap
 from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.rewards import term_weights
@@ -119,6 +119,16 @@ class BatchedExploreEnv(VectorEnv):
             raise ConfigError(
                 f"the native vector env runs the compiled physics only, got robot physics "
                 f"{self.config.robot.physics!r}; use gym.make_vec(..., vectorization_mode='sync') for pymunk"
+            )
+        if self.config.action_type not in PRIMITIVE_ACTION_TYPES:
+            raise ConfigError(
+                f"the native vector env runs primitive actions (continuous, discrete), got action_type "
+                f"{self.config.action_type!r}; use gym.make_vec(..., vectorization_mode='sync') for macro actions"
+            )
+        if self.config.rewards.coverage_auc != 0.0:
+            raise ConfigError(
+                "the native vector env has no coverage_auc reward term; "
+                "use gym.make_vec(..., vectorization_mode='sync') for it"
             )
         self.num_envs = num_envs
         self.render_mode = render_mode

@@ -22,7 +22,7 @@ from realistic_indoor.checks import require_positive
 from realistic_indoor.sim.fields import distance_field
 from realistic_indoor.sim.mapping import MAPPED_FREE, MAPPED_OCCUPIED
 
-__all__ = ["CostConfig", "clearance", "costmap", "dijkstra", "trace_path"]
+__all__ = ["CostConfig", "clearance", "costmap", "dijkstra", "nearest_labels", "trace_path"]
 
 _DR = np.array([0, 0, 1, -1, 1, 1, -1, -1], dtype=np.int64)
 _DC = np.array([1, -1, 0, 0, 1, -1, 1, -1], dtype=np.int64)
@@ -107,6 +107,32 @@ def dijkstra(
     return _dijkstra(cost, start[0], start[1], goals, first_only, max_cost)
 
 
+def nearest_labels(
+    cost: np.ndarray, start: tuple[int, int], labels: np.ndarray, count: int, k: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The ``k`` nearest labelled regions (frontiers) from ``start``, by one Dijkstra search.
+
+    The search of :func:`dijkstra`, stopped once cells of ``k`` different labels are settled:
+    the first settled cell of each label is its nearest cell, and labels come in the order the
+    search settles them (by path cost, ties by the smaller flat index), so the first is the
+    goal :func:`dijkstra` with ``first_only`` finds.
+
+    Args:
+        cost: ``(H, W)`` cost per cell, ``inf`` for lethal cells.
+        start: ``(row, col)`` of the robot.
+        labels: ``(H, W)`` int label of each goal cell (1..count), 0 elsewhere.
+        count: The largest label.
+        k: How many labels to find.
+
+    Returns:
+        ``(dist, parent, found_labels, found_cells)``: path costs (cells; ``inf`` where not
+        settled or not reached), the parent array for :func:`trace_path`, and the labels found
+        and the flat index of each one's nearest cell, nearest first (fewer than ``k`` if fewer
+        are reachable).
+    """
+    return _nearest_labels(cost, start[0], start[1], labels, int(count), int(k))
+
+
 def trace_path(parent: np.ndarray, goal: int) -> np.ndarray:
     """The cells from the start to the flat index ``goal``, as ``(N, 2)`` ``(row, col)``."""
     return _trace(parent, goal)
@@ -115,10 +141,7 @@ def trace_path(parent: np.ndarray, goal: int) -> np.ndarray:
 @njit(cache=True)
 def _dijkstra(cost, sr, sc, goals, first_only, max_cost):  # pragma: no cover - compiled
     h, w = cost.shape
-    dist = np.full((h, w), np.inf)
-    parent = np.full((h, w), -1, dtype=np.int8)
-    dist[sr, sc] = 0.0
-    heap = [(0.0, sr * w + sc)]
+    dist, parent, heap = _search_start(cost, sr, sc)
     found = -1
     while heap:
         d, idx = heapq.heappop(heap)
@@ -133,27 +156,71 @@ def _dijkstra(cost, sr, sc, goals, first_only, max_cost):  # pragma: no cover - 
                 found = idx
             if first_only:
                 break
-        for k in range(8):
-            rr = r + _DR[k]
-            cc = c + _DC[k]
-            if rr < 0 or rr >= h or cc < 0 or cc >= w:
-                continue
-            step = cost[rr, cc]
-            if not np.isfinite(step):
-                continue
-            if k >= 4 and not (np.isfinite(cost[r, cc]) and np.isfinite(cost[rr, c])):
-                continue
-            nd = d + _STEP[k] * step
-            if nd < dist[rr, cc]:
-                dist[rr, cc] = nd
-                parent[rr, cc] = k
-                heapq.heappush(heap, (nd, rr * w + cc))
+        _relax(cost, dist, parent, heap, r, c, d)
     if np.isfinite(max_cost):
         for r in range(h):
             for c in range(w):
                 if dist[r, c] > max_cost:
                     dist[r, c] = np.inf
     return dist, parent, found
+
+
+@njit(cache=True)
+def _search_start(cost, sr, sc):  # pragma: no cover - compiled
+    """A search's distances (``inf`` but the start), parents (-1) and heap (the start)."""
+    h, w = cost.shape
+    dist = np.full((h, w), np.inf)
+    parent = np.full((h, w), -1, dtype=np.int8)
+    dist[sr, sc] = 0.0
+    heap = [(0.0, sr * w + sc)]
+    return dist, parent, heap
+
+
+@njit(cache=True)
+def _relax(cost, dist, parent, heap, r, c, d):  # pragma: no cover - compiled
+    """Push the neighbours of the settled cell ``(r, c)`` (path cost ``d``) that it brings closer."""
+    h, w = cost.shape
+    for k in range(8):
+        rr = r + _DR[k]
+        cc = c + _DC[k]
+        if rr < 0 or rr >= h or cc < 0 or cc >= w:
+            continue
+        step = cost[rr, cc]
+        if not np.isfinite(step):
+            continue
+        if k >= 4 and not (np.isfinite(cost[r, cc]) and np.isfinite(cost[rr, c])):
+            continue
+        nd = d + _STEP[k] * step
+        if nd < dist[rr, cc]:
+            dist[rr, cc] = nd
+            parent[rr, cc] = k
+            heapq.heappush(heap, (nd, rr * w + cc))
+
+
+@njit(cache=True)
+def _nearest_labels(cost, sr, sc, labels, count, k):  # pragma: no cover - compiled
+    w = cost.shape[1]
+    dist, parent, heap = _search_start(cost, sr, sc)
+    seen = np.zeros(count + 1, dtype=np.bool_)
+    found_labels = np.empty(k, dtype=np.int64)
+    found_cells = np.empty(k, dtype=np.int64)
+    n = 0
+    while heap and n < k:
+        d, idx = heapq.heappop(heap)
+        r = idx // w
+        c = idx - r * w
+        if d > dist[r, c]:
+            continue
+        lab = labels[r, c]
+        if lab > 0 and not seen[lab]:
+            seen[lab] = True
+            found_labels[n] = lab
+            found_cells[n] = idx
+            n += 1
+            if n == k:
+                break
+        _relax(cost, dist, parent, heap, r, c, d)
+    return dist, parent, found_labels[:n], found_cells[:n]
 
 
 @njit(cache=True)

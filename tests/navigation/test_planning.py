@@ -88,3 +88,32 @@ def test_find_frontiers__small_ones_dropped_the_rest_numbered_in_scan_order():
     rest = f.without(f.labels == 1)
     assert rest.count == 1 and list(rest.sizes[1:]) == [4]
     assert (rest.labels[8, 3:7] == 1).all() and rest.labels.sum() == 4
+
+
+def test_nearest_labels__finds_the_k_nearest_regions_in_the_order_a_full_search_ranks_them():
+    from realistic_indoor.navigation.planning import nearest_labels
+
+    rng = np.random.default_rng(0)
+    cost = 1.0 + rng.random((40, 50)) * 3.0
+    cost[rng.random(cost.shape) < 0.15] = np.inf  # scattered obstacles
+    cost[20, 25] = 1.0
+    labels = np.zeros(cost.shape, dtype=np.int32)
+    for lab, (r, c) in enumerate([(2, 3), (35, 45), (10, 40), (30, 5), (20, 27), (5, 25)], start=1):
+        labels[r : r + 2, c : c + 3] = lab
+        cost[r : r + 2, c : c + 3] = 1.0
+    dist, _, first = dijkstra(cost, (20, 25), labels > 0, first_only=False)
+    flat = np.flatnonzero(labels)
+    best = {}  # label -> (cost, cell): the nearest cell of each label, ties by the smaller index
+    for cell in flat:
+        d = dist.ravel()[cell]
+        lab = int(labels.ravel()[cell])
+        if np.isfinite(d) and (lab not in best or (d, cell) < best[lab]):
+            best[lab] = (d, cell)
+    want = sorted(best.items(), key=lambda item: item[1])
+    for k in (1, 3, 10):
+        _, parent, got_labels, got_cells = nearest_labels(cost, (20, 25), labels, 6, k)
+        assert got_labels.tolist() == [lab for lab, _ in want[:k]]
+        assert got_cells.tolist() == [cell for _, (_, cell) in want[:k]]
+        path = trace_path(parent, int(got_cells[0]))
+        assert tuple(path[0]) == (20, 25) and path[-1, 0] * 50 + path[-1, 1] == got_cells[0]
+    assert got_cells[0] == first  # the first is the nearest-goal search's goal

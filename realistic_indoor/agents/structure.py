@@ -11,7 +11,7 @@ from realistic_indoor.agents.explorer import ExplorerConfig, MapExplorer, PlanCo
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.navigation.frontiers import Frontiers
-from realistic_indoor.navigation.goals import frontier_costs
+from realistic_indoor.navigation.goals import frontier_costs, off_circulation
 from realistic_indoor.navigation.planning import dijkstra
 from realistic_indoor.navigation.regions import RegionConfig, Regions, find_regions
 
@@ -77,24 +77,10 @@ class StructureAgent(MapExplorer):
         if nearest < 0:
             return None
         self.regions = find_regions(ctx.state, ctx.clearance_m, ctx.resolution_m, self.structure.regions)
-        factor = np.where(self._in_rooms(frontiers, ctx), self.structure.room_factor, 1.0)
+        reach = max(1, round(self.structure.reach_m / ctx.resolution_m))
+        factor = np.where(off_circulation(frontiers, self.regions, reach), self.structure.room_factor, 1.0)
         # A frontier whose path costs more than the nearest one's weighted cost cannot win.
         bound = dist.ravel()[nearest] * ctx.resolution_m * factor[frontiers.labels.ravel()[nearest] - 1]
         costs, cells, parent = frontier_costs(frontiers, ctx, max_cost_m=bound)
         weighted = np.where(np.isfinite(costs), costs * factor, np.inf)
         return int(cells[int(np.argmin(weighted))]), parent
-
-    def _in_rooms(self, frontiers: Frontiers, ctx: PlanContext) -> np.ndarray:
-        """Whether each frontier lies off the circulation: no corridor or hall core within reach."""
-        k = max(1, round(self.structure.reach_m / ctx.resolution_m))
-        circulation = self.regions.circulation()
-        rows, cols = np.nonzero(frontiers.mask)
-        h, w = circulation.shape
-        near = np.zeros(len(rows), dtype=bool)
-        for dr in range(-k, k + 1, 2):
-            for dc in range(-k, k + 1, 2):
-                if dr * dr + dc * dc <= k * k:
-                    r, c = np.clip(rows + dr, 0, h - 1), np.clip(cols + dc, 0, w - 1)
-                    near |= circulation[r, c]
-        touching = np.bincount(frontiers.labels[rows, cols], weights=near, minlength=frontiers.count + 1)
-        return touching[1:] == 0

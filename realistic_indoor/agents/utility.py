@@ -5,14 +5,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import ndimage
 
 from realistic_indoor.agents.base import RobotSpec
 from realistic_indoor.agents.explorer import ExplorerConfig, MapExplorer, PlanContext
 from realistic_indoor.checks import require_positive
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.navigation.frontiers import Frontiers
-from realistic_indoor.navigation.goals import frontier_costs
+from realistic_indoor.navigation.goals import frontier_costs, unobserved_area_near
 from realistic_indoor.navigation.planning import dijkstra
 
 __all__ = ["UtilityConfig", "UtilityFrontierAgent"]
@@ -97,12 +96,6 @@ class UtilityFrontierAgent(MapExplorer):
         Its length (m), or the largest unobserved area (m2) within ``gain_radius_m`` of one of
         its cells.
         """
-        res = ctx.resolution_m
         if self.utility.gain == "length":
-            return frontiers.sizes[1:] * res
-        k = max(1, round(self.utility.gain_radius_m / res))
-        area = ndimage.uniform_filter(ctx.todo.astype(np.float32), size=2 * k + 1, mode="constant")
-        rows, cols = np.nonzero(frontiers.mask)
-        best = np.zeros(frontiers.count + 1)
-        np.maximum.at(best, frontiers.labels[rows, cols], area[rows, cols])
-        return best[1:] * (2 * k + 1) ** 2 * res**2
+            return frontiers.sizes[1:] * ctx.resolution_m
+        return unobserved_area_near(frontiers, ctx, self.utility.gain_radius_m)

@@ -72,9 +72,10 @@ class ExploreEnv(gym.Env):
 
     ``S`` is ``local_map.size_px`` (64 by default, 0.2 m per pixel: a 12.8 m square). The
     defaults give 109 beams over 270 degrees with a 10 m range. With ``action_type="frontier"``
-    the dict adds ``candidates`` (``(K * 7,)`` float32: per candidate goal, whether it exists,
+    the dict adds ``candidates`` (``(K * 9,)`` float32: per candidate goal, whether it exists,
     its path cost and distance in units of 10 m, the cosine and sine of its bearing, its
-    frontier length in units of 10 m, whether it is a victim;
+    frontier length in units of 10 m, the unobserved area near it in units of 10 m2, whether it
+    lies off the corridors and halls recognised on the map, whether it is a victim;
     :data:`~realistic_indoor.envs.macro.CANDIDATE_FEATURES`) and ``time_left`` (``(1,)``: the
     share of the step limit still to come).
 

@@ -28,11 +28,13 @@ from typing import Any, NamedTuple
 import numpy as np
 from gymnasium import spaces
 
-from realistic_indoor.checks import require_int
+from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.envs.actions import discrete_index
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.navigation.goals import off_circulation, unobserved_area_near
 from realistic_indoor.navigation.navigator import ExplorerConfig, Found, Navigator, PlanOptions
 from realistic_indoor.navigation.planning import nearest_labels, trace_path
+from realistic_indoor.navigation.regions import RegionConfig, find_regions
 from realistic_indoor.navigation.spec import RobotSpec
 
 __all__ = [
@@ -47,15 +49,29 @@ __all__ = [
 MACRO_ACTION_TYPES = ("frontier",)
 """Action types whose action chooses a goal rather than a velocity."""
 
-CANDIDATE_FEATURES = ("valid", "path_cost", "distance", "cos_bearing", "sin_bearing", "size", "victim")
+CANDIDATE_FEATURES = (
+    "valid",
+    "path_cost",
+    "distance",
+    "cos_bearing",
+    "sin_bearing",
+    "size",
+    "unobserved",
+    "in_room",
+    "victim",
+)
 """Columns of the ``candidates`` observation, per candidate: 1 if it exists; path cost to it in
 units of 10 m of clear floor; straight-line distance in units of 10 m; cosine and sine of its
-bearing from the robot's heading; the frontier's length in units of 10 m (0 for a victim); 1 if
-it is a detected victim. Lengths are capped at 100 units. Rows of candidates that do not exist
-are 0."""
+bearing from the robot's heading; the frontier's length in units of 10 m; the largest unobserved
+area within ``gain_radius_m`` (3 m) of its cells, in units of 10 m2; 1 if it lies off the
+corridors and halls the robot has recognised on its map (the structure explorer's room
+frontiers); 1 if it is a detected victim (whose frontier columns are 0). Lengths and areas are
+capped at 100 units. Rows of candidates that do not exist are 0."""
 
 _LENGTH_UNIT_M = 10.0
 """Metres per unit of the length features of the ``candidates`` observation."""
+_AREA_UNIT_M2 = 10.0
+"""Square metres per unit of the area feature of the ``candidates`` observation."""
 _MAX_LENGTH = 100.0
 """Length features are capped at this many units (1 km): the observation space is bounded."""
 
@@ -68,13 +84,28 @@ class MacroConfig:
         n_candidates: Candidate goals a decision chooses among (K of ``Discrete(K)``), >= 1.
         navigator: The navigator that drives to the chosen goal: the map-based explorers'
             settings (own map resolution, replanning, costmap, follower, getting unstuck).
+        gain_radius_m: Half-side of the square around a frontier's cells whose unobserved area
+            is its ``unobserved`` feature (m), as the utility explorer's area gain.
+        regions: How corridors and halls are recognised on the map (the ``in_room`` feature),
+            as the structure explorer does.
+        reach_m: A frontier within this distance of a corridor's or hall's core is not in a
+            room (m).
     """
 
     n_candidates: int = 16
     navigator: ExplorerConfig = field(default_factory=ExplorerConfig)
+    gain_radius_m: float = 3.0
+    regions: RegionConfig = field(default_factory=RegionConfig)
+    reach_m: float = 0.25
 
     def __post_init__(self) -> None:
         require_int("MacroConfig", "n_candidates", self.n_candidates, 1)
+        require_positive("MacroConfig", "gain_radius_m", self.gain_radius_m, "m")
+        require_positive("MacroConfig", "reach_m", self.reach_m, "m")
+        if not isinstance(self.regions, RegionConfig):
+            raise ConfigError(
+                f"MacroConfig.regions must be a RegionConfig, got {type(self.regions).__name__}"
+            )
         if not isinstance(self.navigator, ExplorerConfig):
             raise ConfigError(
                 f"MacroConfig.navigator must be an ExplorerConfig, got {type(self.navigator).__name__}"
@@ -90,6 +121,8 @@ class Candidates(NamedTuple):
         xy: ``(n, 2)`` goal points (m, odometry frame).
         cost_m: ``(n,)`` path costs (m of clear floor).
         size_m: ``(n,)`` frontier lengths (m; 0 for a victim).
+        unobserved_m2: ``(n,)`` unobserved area near each frontier (m2; 0 for a victim).
+        in_room: ``(n,)`` bool: the frontier lies off the recognised corridors and halls.
     """
 
     goals: list[Found]
@@ -97,6 +130,8 @@ class Candidates(NamedTuple):
     xy: np.ndarray
     cost_m: np.ndarray
     size_m: np.ndarray
+    unobserved_m2: np.ndarray
+    in_room: np.ndarray
 
     @property
     def count(self) -> int:
@@ -104,7 +139,7 @@ class Candidates(NamedTuple):
         return len(self.goals)
 
 
-def rank_candidates(options: PlanOptions, k: int, navigator: Navigator) -> Candidates:
+def rank_candidates(options: PlanOptions, config: MacroConfig, navigator: Navigator) -> Candidates:
     """The ``k`` best candidate goals of a decision: the victim to go to (if any), then frontiers.
 
     Frontiers are ranked by the path cost to their nearest cell, ties by that cell's index in
@@ -115,38 +150,42 @@ def rank_candidates(options: PlanOptions, k: int, navigator: Navigator) -> Candi
 
     Args:
         options: What the navigator offers (:meth:`Navigator.options`).
-        k: How many candidates at most.
+        config: The number of candidates and how their features are measured.
         navigator: The navigator (its map turns cells into points).
     """
-    ctx = options.ctx
+    ctx, k = options.ctx, config.n_candidates
     goals: list[Found] = []
-    victim: list[bool] = []
     cells: list[int] = []
     costs: list[float] = []
-    sizes: list[float] = []
+    labels = np.zeros(0, dtype=np.int64)
     if options.victim is not None and options.victim_path is not None:
         goal, parent = options.victim_path
         goals.append(options.victim_path)
-        victim.append(True)
         cells.append(int(goal))
         costs.append(_path_cost_m(ctx, parent, goal))
-        sizes.append(0.0)
+    n_victims = len(goals)
     frontiers = options.frontiers
     if frontiers.count and len(goals) < k:
         dist, parent, labels, nearest = nearest_labels(
             ctx.cost, ctx.start, frontiers.labels, frontiers.count, k - len(goals)
         )
         flat_dist = dist.ravel()
-        for label, cell in zip(labels.tolist(), nearest.tolist(), strict=True):
-            goals.append((cell, parent))
-            victim.append(False)
-            cells.append(cell)
-            costs.append(float(flat_dist[cell]) * ctx.resolution_m)
-            sizes.append(float(frontiers.sizes[label]) * ctx.resolution_m)
+        goals.extend((cell, parent) for cell in nearest.tolist())
+        cells.extend(nearest.tolist())
+        costs.extend((flat_dist[nearest] * ctx.resolution_m).tolist())
+    size, area, in_room = (np.zeros(len(goals)) for _ in range(3))
+    if len(labels):
+        res = ctx.resolution_m
+        size[n_victims:] = frontiers.sizes[labels] * res
+        area[n_victims:] = unobserved_area_near(frontiers, ctx, config.gain_radius_m)[labels - 1]
+        regions = find_regions(ctx.state, ctx.clearance_m, res, config.regions)
+        reach = max(1, round(config.reach_m / res))
+        in_room[n_victims:] = off_circulation(frontiers, regions, reach)[labels - 1]
     w = ctx.state.shape[1]
     flat = np.array(cells, dtype=np.int64)
     xy = navigator.map.to_world(flat // w + ctx.box.r0, flat % w + ctx.box.c0).reshape(-1, 2)
-    return Candidates(goals, victim, xy, np.array(costs, dtype=float), np.array(sizes, dtype=float))
+    victim = [True] * n_victims + [False] * (len(goals) - n_victims)
+    return Candidates(goals, victim, xy, np.array(costs, dtype=float), size, area, in_room.astype(bool))
 
 
 def _path_cost_m(ctx: Any, parent: np.ndarray, goal: int) -> float:
@@ -198,7 +237,7 @@ class FrontierActions:
         if not self.navigator.sense(obs, info):
             return False
         options = self.navigator.options()
-        candidates = rank_candidates(options, self.k, self.navigator)
+        candidates = rank_candidates(options, self.config, self.navigator)
         if candidates.count == 0:
             self.navigator.commit(options, None)
             return False
@@ -282,7 +321,9 @@ class FrontierActions:
         out[:n, 3] = np.cos(bearing)
         out[:n, 4] = np.sin(bearing)
         out[:n, 5] = np.minimum(c.size_m / _LENGTH_UNIT_M, _MAX_LENGTH)
-        out[:n, 6] = np.array(c.victim, dtype=np.float32)
+        out[:n, 6] = np.minimum(c.unobserved_m2 / _AREA_UNIT_M2, _MAX_LENGTH)
+        out[:n, 7] = c.in_room
+        out[:n, 8] = np.array(c.victim, dtype=np.float32)
         return out.ravel()
 
     def features_space(self) -> spaces.Box:
@@ -290,5 +331,5 @@ class FrontierActions:
         low = np.zeros((self.k, len(CANDIDATE_FEATURES)), dtype=np.float32)
         low[:, 3:5] = -1.0
         high = np.full(low.shape, _MAX_LENGTH, dtype=np.float32)
-        high[:, 0] = high[:, 3] = high[:, 4] = high[:, 6] = 1.0
+        high[:, [0, 3, 4, 7, 8]] = 1.0
         return spaces.Box(low.ravel(), high.ravel(), dtype=np.float32)

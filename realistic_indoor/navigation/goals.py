@@ -1,19 +1,22 @@
-"""Goals among the frontiers: the nearest one, and the path cost to each.
+"""Goals among the frontiers: the nearest one, the path cost to each, and what lies around them.
 
-The choices the navigator's callers share: the nearest-frontier explorer's goal, and the path
-cost to every frontier that the utility and structure explorers, and the environments' frontier
-macro actions, rank frontiers by.
+What the navigator's callers share: the nearest-frontier explorer's goal; the path cost to
+every frontier, which the utility and structure explorers rank frontiers by; and two measures of
+each frontier that they and the environments' macro actions (the ``candidates`` observation)
+use: the unobserved area near it, and whether it lies off the corridors and halls.
 """
 
 from __future__ import annotations
 
 import numpy as np
+from scipy import ndimage
 
 from realistic_indoor.navigation.frontiers import Frontiers
 from realistic_indoor.navigation.navigator import Found, PlanContext
 from realistic_indoor.navigation.planning import dijkstra
+from realistic_indoor.navigation.regions import Regions
 
-__all__ = ["frontier_costs", "nearest_frontier"]
+__all__ = ["frontier_costs", "nearest_frontier", "off_circulation", "unobserved_area_near"]
 
 
 def nearest_frontier(frontiers: Frontiers, ctx: PlanContext) -> Found | None:
@@ -58,3 +61,49 @@ def frontier_costs(
     cells[lab[first] - 1] = flat[first]
     cells[~reached] = -1
     return costs * ctx.resolution_m, cells, parent
+
+
+def unobserved_area_near(frontiers: Frontiers, ctx: PlanContext, radius_m: float) -> np.ndarray:
+    """The largest unobserved area within a square of half-side ``radius_m`` of a frontier's cells.
+
+    Args:
+        frontiers: The frontiers.
+        ctx: The planning window (``ctx.todo``: the cells still to observe).
+        radius_m: Half the side of the square (m).
+
+    Returns:
+        ``(count,)`` area (m2) per frontier.
+    """
+    res = ctx.resolution_m
+    k = max(1, round(radius_m / res))
+    area = ndimage.uniform_filter(ctx.todo.astype(np.float32), size=2 * k + 1, mode="constant")
+    rows, cols = np.nonzero(frontiers.mask)
+    best = np.zeros(frontiers.count + 1)
+    np.maximum.at(best, frontiers.labels[rows, cols], area[rows, cols])
+    return best[1:] * (2 * k + 1) ** 2 * res**2
+
+
+def off_circulation(frontiers: Frontiers, regions: Regions, reach_cells: int) -> np.ndarray:
+    """Whether each frontier lies off the circulation: no corridor or hall core within reach.
+
+    Args:
+        frontiers: The frontiers.
+        regions: The regions of the same window (:func:`~realistic_indoor.navigation.regions.find_regions`).
+        reach_cells: A frontier cell within this many cells of a corridor's or hall's core
+            (sampled every other cell) touches the circulation.
+
+    Returns:
+        ``(count,)`` bool: ``True`` for a frontier in a room (or in no recognised region).
+    """
+    k = reach_cells
+    circulation = regions.circulation()
+    rows, cols = np.nonzero(frontiers.mask)
+    h, w = circulation.shape
+    near = np.zeros(len(rows), dtype=bool)
+    for dr in range(-k, k + 1, 2):
+        for dc in range(-k, k + 1, 2):
+            if dr * dr + dc * dc <= k * k:
+                r, c = np.clip(rows + dr, 0, h - 1), np.clip(cols + dc, 0, w - 1)
+                near |= circulation[r, c]
+    touching = np.bincount(frontiers.labels[rows, cols], weights=near, minlength=frontiers.count + 1)
+    return touching[1:] == 0

@@ -268,3 +268,23 @@ def test_render__shows_the_candidates_and_the_goal():
     plain = gym.make("OfficeExplore-v0", area_m2=300.0, render_mode="rgb_array")
     plain.reset(seed=2)
     assert painted(plain.render(), COLOURS["candidate"]) == 0
+
+
+def test_candidate_features__room_and_unobserved_area_are_measured():
+    """In an office, frontiers in rooms and on the circulation both occur, and the unobserved area
+    near a frontier is positive and never exceeds the square it is measured on."""
+    env = gym.make("OfficeExplore-v0", area_m2=600.0, action_type="frontier")
+    obs, _ = env.reset(seed=3)
+    features = []
+    for _ in range(40):
+        cand = obs["candidates"].reshape(16, len(CANDIDATE_FEATURES))
+        features.append(cand[cand[:, 0] == 1.0])
+        obs, _, terminated, truncated, _ = env.step(0)
+        if terminated or truncated:
+            break
+    rows = np.concatenate(features)
+    area = rows[:, CANDIDATE_FEATURES.index("unobserved")] * 10.0
+    assert np.all(area >= 0.0) and np.all(area <= 6.1**2 + 1e-3)  # a 6.1 m square at 0.1 m cells
+    assert area.max() > 5.0  # some frontier opens on unseen floor
+    in_room = rows[:, CANDIDATE_FEATURES.index("in_room")]
+    assert set(np.unique(in_room)) == {0.0, 1.0}  # both kinds of frontier occur

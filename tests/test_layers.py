@@ -160,6 +160,38 @@ def test_modules__import_each_other_in_no_cycle():
     assert cycles == []
 
 
+def _module_graph(edges: dict[str, list[tuple[str, str, int]]]) -> nx.DiGraph:
+    """Module -> imported module, for every runtime import (lazy ones inside functions too).
+
+    A package's ``__init__`` importing its own submodules, and a submodule importing its
+    package, are left out: a package is the sum of its modules, not a module beside them.
+    """
+    graph = nx.DiGraph()
+    for src, found in edges.items():
+        for dst, _, _ in found:
+            if dst != src and not src.startswith(dst + ".") and not dst.startswith(src + "."):
+                graph.add_edge(src, dst)
+    return graph
+
+
+def test_modules__import_each_other_in_no_cycle_even_lazily():
+    """No two modules need each other, not even through an import inside a function: a lazy
+    import that closes a circle hides a dependency that goes both ways."""
+    cycles = sorted(sorted(c) for c in nx.simple_cycles(_module_graph(EDGES)) if len(c) > 1)
+    assert cycles == []
+
+
+def test_cycle_check__sees_a_cycle_closed_by_a_lazy_import():
+    a = imports_in("from realistic_indoor.sim import lidar\n", "realistic_indoor.sim.raster", False, KNOWN)
+    b = imports_in(
+        "def f():\n    from realistic_indoor.sim import raster\n", "realistic_indoor.sim.lidar", False, KNOWN
+    )
+    graph = _module_graph({"realistic_indoor.sim.raster": a, "realistic_indoor.sim.lidar": b})
+    assert [sorted(c) for c in nx.simple_cycles(graph)] == [
+        ["realistic_indoor.sim.lidar", "realistic_indoor.sim.raster"]
+    ]
+
+
 def imports_of_node(path: Path, node: ast.Import | ast.ImportFrom) -> list[tuple[str, str, int]]:
     importer, is_package = module_name(path), path.name == "__init__.py"
     if isinstance(node, ast.Import):

@@ -9,7 +9,8 @@ from typing import Any
 
 from realistic_indoor.checks import require_int, require_range
 from realistic_indoor.envs.actions import ACTION_TYPES
-from realistic_indoor.envs.macro import MacroConfig
+from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, MacroConfig
+from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS, GlobalMapConfig
 from realistic_indoor.envs.rewards import RewardWeights
 from realistic_indoor.envs.source import (
     GENERATED_KEYWORDS,
@@ -26,7 +27,7 @@ from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
-__all__ = ["TASK_FIELDS", "EnvConfig", "base_config", "require_reset_options", "require_task_fields"]
+__all__ = ["TASK_FIELDS", "EnvConfig", "require_reset_options", "require_task_fields"]
 
 TASK_FIELDS: dict[str, str] = {"victims": "search", "coverage_target": "explore"}
 """Fields of :class:`EnvConfig` that one task only uses: field name -> that task."""
@@ -39,6 +40,7 @@ _SUBCONFIGS = {
     "rewards": RewardWeights,
     "victims": VictimConfig,
     "macro": MacroConfig,
+    "global_map": GlobalMapConfig,
 }
 
 
@@ -82,6 +84,12 @@ class EnvConfig:
             navigator; :mod:`realistic_indoor.envs.macro`).
         macro: Candidates per decision and the navigator's settings, for
             ``action_type="frontier"`` (ignored otherwise).
+        extra_observations: Observation keys added to the task's own: any of ``"global_map"``
+            (the robot's whole map around it, start heading up: :attr:`global_map`),
+            ``"candidates"`` (macro actions only) and ``"time_left"`` (the share of the step
+            limit left). ``None``: the action type's default, ``("candidates", "time_left")``
+            with macro actions, none with primitive ones.
+        global_map: Size (pixels) and pixel side (m) of the ``global_map`` observation.
     """
 
     source: BuildingSource = field(default_factory=GeneratedBuildings)
@@ -95,6 +103,8 @@ class EnvConfig:
     max_steps: int = 1000
     action_type: str = "continuous"
     macro: MacroConfig = field(default_factory=MacroConfig)
+    extra_observations: tuple[str, ...] | None = None
+    global_map: GlobalMapConfig = field(default_factory=GlobalMapConfig)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "source", as_source(self.source))
@@ -102,9 +112,39 @@ class EnvConfig:
             raise ConfigError(
                 f"EnvConfig.action_type must be one of {', '.join(ACTION_TYPES)}, got {self.action_type!r}"
             )
+        self._check_extra_observations()
         require_range("EnvConfig", "coverage_target", self.coverage_target, 0.0, 1.0, "")
         require_int("EnvConfig", "max_steps", self.max_steps, 1)
         self._check_types()
+
+    @property
+    def observation_extras(self) -> tuple[str, ...]:
+        """The extra observation keys in force: :attr:`extra_observations`, or the action type's default."""
+        if self.extra_observations is not None:
+            return self.extra_observations
+        return ("candidates", "time_left") if self.action_type in MACRO_ACTION_TYPES else ()
+
+    def _check_extra_observations(self) -> None:
+        extras = self.extra_observations
+        if extras is None:
+            return
+        if isinstance(extras, str) or not all(isinstance(k, str) for k in extras):
+            raise ConfigError(
+                f"EnvConfig.extra_observations must be a tuple of names ({', '.join(EXTRA_OBSERVATIONS)}), "
+                f"got {extras!r}"
+            )
+        unknown = [k for k in extras if k not in EXTRA_OBSERVATIONS]
+        if unknown:
+            raise ConfigError(
+                f"EnvConfig.extra_observations: unknown {', '.join(map(repr, unknown))}; "
+                f"valid: {', '.join(EXTRA_OBSERVATIONS)}"
+            )
+        if "candidates" in extras and self.action_type not in MACRO_ACTION_TYPES:
+            raise ConfigError(
+                "EnvConfig.extra_observations: 'candidates' needs macro actions (action_type='frontier'), "
+                f"got action_type {self.action_type!r}"
+            )
+        object.__setattr__(self, "extra_observations", tuple(dict.fromkeys(extras)))
 
     def _check_types(self) -> None:
         for name, cls in _SUBCONFIGS.items():
@@ -171,28 +211,6 @@ def _require_known(owner: str, changes: Mapping[str, Any], known: set[str]) -> N
     unknown = sorted(set(changes) - known)
     if unknown:
         raise ConfigError(f"{owner} has no field {unknown[0]!r}; fields: {', '.join(sorted(known))}")
-
-
-def base_config(config: EnvConfig | None, preset: str | None) -> EnvConfig:
-    """The configuration an environment starts from, before its keyword overrides.
-
-    Args:
-        config: A whole configuration; it wins over ``preset``.
-        preset: A registered id (``gym.make`` passes the id it makes); its configuration is
-            used when ``config`` is ``None``.
-
-    Raises:
-        ConfigError: If ``config`` is not an ``EnvConfig`` or ``preset`` is not a registered id.
-    """
-    if config is not None:
-        if not isinstance(config, EnvConfig):
-            raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
-        return config
-    if preset is None:
-        return EnvConfig()
-    from realistic_indoor.envs.presets import preset_config
-
-    return preset_config(preset)
 
 
 def require_task_fields(config: EnvConfig, task: str, named: Iterable[str] = ()) -> None:

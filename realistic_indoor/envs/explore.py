@@ -10,9 +10,10 @@ from gymnasium import spaces
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
-from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, FrontierActions
-from realistic_indoor.envs.observations import explore_observations
+from realistic_indoor.envs.observations import GlobalMapObservation, explore_observations
+from realistic_indoor.envs.presets import base_config
 from realistic_indoor.envs.rewards import auc_weight, reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
 from realistic_indoor.envs.source import episode_building
@@ -77,7 +78,10 @@ class ExploreEnv(gym.Env):
     frontier length in units of 10 m, the unobserved area near it in units of 10 m2, whether it
     lies off the corridors and halls recognised on the map, whether it is a victim;
     :data:`~realistic_indoor.envs.macro.CANDIDATE_FEATURES`) and ``time_left`` (``(1,)``: the
-    share of the step limit still to come).
+    share of the step limit still to come). ``extra_observations=["global_map", "time_left"]``
+    adds these in any mode: ``global_map`` is ``(4, S, S)`` uint8 (free, wall, unknown, visited
+    channels of 0 or 255; the robot's whole map around it, start heading up, ``global_map.resolution_m``
+    per pixel: :class:`~realistic_indoor.envs.observations.GlobalMapObservation`).
 
     ## Rewards
 
@@ -147,6 +151,8 @@ class ExploreEnv(gym.Env):
     | `max_steps`       | `int`                | preset      | steps before truncation                       |
     | `action_type`     | `str`                | continuous  | `"continuous"`, `"discrete"` or `"frontier"`  |
     | `macro`           | `MacroConfig`        | 16 candidates | candidate goals per decision, navigator settings (`"frontier"` only) |
+    | `extra_observations` | tuple of names    | `None`      | `global_map`, `candidates`, `time_left` (default: the latter two with macro actions) |
+    | `global_map`      | `GlobalMapConfig`    | 128 px, 0.5 m | size and pixel side of the `global_map` observation |
 
     ``victims`` (search only) is refused with a :class:`~realistic_indoor.errors.ConfigError`,
     as is any name that is not a field.
@@ -212,9 +218,14 @@ class ExploreEnv(gym.Env):
         self._observations = self._make_observations()
         self._macro = self._make_macro() if macro else None
         self.action_space = self._actions.space if self._macro is None else self._macro.space
+        self._extras = self.config.observation_extras
+        self._global_map = GlobalMapObservation(self.config) if "global_map" in self._extras else None
         obs_spaces = {k: o.space for k, o in self._observations.items()}
-        if self._macro is not None:
+        if self._global_map is not None:
+            obs_spaces["global_map"] = self._global_map.space
+        if "candidates" in self._extras:
             obs_spaces["candidates"] = self._macro.features_space()
+        if "time_left" in self._extras:
             obs_spaces["time_left"] = spaces.Box(0.0, 1.0, (1,), np.float32)
         self.observation_space = spaces.Dict(obs_spaces)
         self._steps = 0
@@ -243,10 +254,9 @@ class ExploreEnv(gym.Env):
         obs = self._observe()
         if self._macro is not None:
             self._macro.reset(obs, info)
-            obs = self._macro_observation(obs)
         if self.render_mode == "human":
             self.render()
-        return obs, info
+        return self._with_extras(obs), info
 
     def step(
         self, action: np.ndarray | int
@@ -261,7 +271,8 @@ class ExploreEnv(gym.Env):
             raise gym.error.ResetNeeded("call reset() before step()")
         if self._macro is not None:
             return self._macro_step(action)
-        return self._primitive_step(action)
+        obs, reward, terminated, truncated, info = self._primitive_step(action)
+        return self._with_extras(obs), reward, terminated, truncated, info
 
     def action_masks(self) -> np.ndarray:
         """Which actions are valid now, as sb3-contrib's ``MaskablePPO`` asks.
@@ -278,7 +289,7 @@ class ExploreEnv(gym.Env):
     def _primitive_step(
         self, action: np.ndarray | int
     ) -> tuple[dict[str, np.ndarray], float, bool, bool, dict[str, Any]]:
-        """One control step with a velocity action (continuous or discrete)."""
+        """One control step with a velocity action (continuous or discrete); the task's own observation."""
         v, w = self._actions.command(action)
         outcome = self._sim.step(v, w, self.np_random)
         self._steps += 1
@@ -316,12 +327,22 @@ class ExploreEnv(gym.Env):
         info["steps"] = self._steps
         info["choice"] = chosen
         info["fallback"] = fallback
-        return self._macro_observation(obs), reward, terminated, truncated, info
+        return self._with_extras(obs), reward, terminated, truncated, info
 
-    def _macro_observation(self, obs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
-        """A primitive observation with the candidate goals and the share of the step limit left."""
-        left = max(0.0, 1.0 - self._steps / self.config.max_steps)
-        return {**obs, "candidates": self._macro.features(), "time_left": np.array([left], dtype=np.float32)}
+    def _with_extras(self, obs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        """The task's observation with the extra keys in force (``EnvConfig.observation_extras``)."""
+        if not self._extras:
+            return obs
+        obs = dict(obs)
+        if self._global_map is not None:
+            obs["global_map"] = self._global_map.observe(self._sim)
+        if "candidates" in self._extras:
+            obs["candidates"] = self._macro.features()
+        if "time_left" in self._extras:
+            obs["time_left"] = np.array(
+                [max(0.0, 1.0 - self._steps / self.config.max_steps)], dtype=np.float32
+            )
+        return obs
 
     def _make_macro(self) -> FrontierActions:
         """The macro actions' navigator, for the robot the observations describe."""

@@ -2,17 +2,23 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 from gymnasium import spaces
+
+from realistic_indoor.checks import require_int, require_positive
 
 if TYPE_CHECKING:
     from realistic_indoor.envs.config import EnvConfig
     from realistic_indoor.envs.simulation import Simulation
 
 __all__ = [
+    "EXTRA_OBSERVATIONS",
     "POSE_LIMIT_M",
+    "GlobalMapConfig",
+    "GlobalMapObservation",
     "LocalMapObservation",
     "PoseObservation",
     "ScanObservation",
@@ -22,6 +28,60 @@ __all__ = [
 
 POSE_LIMIT_M = 1000.0
 """Bound of the odometry position in the observation space (m); positions are clipped to it."""
+
+EXTRA_OBSERVATIONS = ("global_map", "candidates", "time_left")
+"""Observation keys an environment adds on request (``EnvConfig.extra_observations``):
+``candidates`` needs macro actions, which add it and ``time_left`` by default."""
+
+
+@dataclass(frozen=True)
+class GlobalMapConfig:
+    """The ``global_map`` observation: the robot's whole map around it, in a fixed orientation.
+
+    Attributes:
+        size_px: Side of the image (pixels).
+        resolution_m: Side of a pixel (m); with the defaults the image covers 64 m x 64 m.
+    """
+
+    size_px: int = 128
+    resolution_m: float = 0.5
+
+    def __post_init__(self) -> None:
+        require_int("GlobalMapConfig", "size_px", self.size_px, 8)
+        require_positive("GlobalMapConfig", "resolution_m", self.resolution_m, "m")
+
+
+class GlobalMapObservation:
+    """The map around the robot, start heading up: ``(4, S, S)`` uint8 channels of 0 or 255.
+
+    Channels: free floor, walls, unknown (neither), visited (the robot's centre passed through
+    the pixel). The image is centred on the robot and turned so that the heading it started
+    with points up (row 0), whatever its heading now; pixels are ``global_map.resolution_m``
+    across. Nothing in it reveals the building's extent beyond what the robot has mapped.
+    """
+
+    def __init__(self, config: EnvConfig) -> None:
+        self.config = config.global_map
+        s = self.config.size_px
+        self.space = spaces.Box(0, 255, (4, s, s), np.uint8)
+
+    def observe(self, sim: Simulation) -> np.ndarray:
+        """The image (a new array). Cost: a pass over the pooled map and the trajectory."""
+        s, res = self.config.size_px, self.config.resolution_m
+        image = np.zeros(self.space.shape, dtype=np.uint8)
+        x, y, _ = sim.robot.pose
+        up = sim.world.start_pose[2]
+        sim.map.global_view((x, y), up, res, image[0], image[1])
+        image[2][(image[0] == 0) & (image[1] == 0)] = 255
+        track = np.asarray(sim.trajectory, dtype=float).reshape(-1, 2) - (x, y)
+        c, si = np.cos(up), np.sin(up)
+        ahead = (track[:, 0] * c + track[:, 1] * si) / res
+        left = (track[:, 1] * c - track[:, 0] * si) / res
+        rows = np.floor(s / 2 - ahead).astype(np.int64)
+        cols = np.floor(s / 2 - left).astype(np.int64)
+        inside = (rows >= 0) & (rows < s) & (cols >= 0) & (cols < s)
+        image[3][rows[inside], cols[inside]] = 255
+        return image
 
 
 class ScanObservation:

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
-__all__ = ["PRESETS", "EnvPreset", "preset_config"]
+if TYPE_CHECKING:
+    from realistic_indoor.envs.config import EnvConfig
+
+__all__ = ["PRESETS", "EnvPreset", "base_config", "preset_config"]
 
 _ENTRY_POINTS = {
     "Explore": "realistic_indoor.envs.explore:ExploreEnv",
@@ -92,3 +95,26 @@ def preset_config(env_id: str, **overrides: Any):
     task = next(t for t in _ENTRY_POINTS if env_id.endswith(f"{t}-v0"))
     require_task_fields(config, task.lower(), overrides)
     return config
+
+
+def base_config(config: EnvConfig | None, preset: str | None) -> EnvConfig:
+    """The configuration an environment starts from, before its keyword overrides.
+
+    Args:
+        config: A whole configuration; it wins over ``preset``.
+        preset: A registered id (``gym.make`` passes the id it makes); its configuration is
+            used when ``config`` is ``None``.
+
+    Raises:
+        ConfigError: If ``config`` is not an ``EnvConfig`` or ``preset`` is not a registered id.
+    """
+    from realistic_indoor.envs.config import EnvConfig
+    from realistic_indoor.errors import ConfigError
+
+    if config is not None:
+        if not isinstance(config, EnvConfig):
+            raise ConfigError(f"config must be an EnvConfig, got {type(config).__name__}")
+        return config
+    if preset is None:
+        return EnvConfig()
+    return preset_config(preset)

@@ -21,8 +21,9 @@ from numba.typed import List
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
 from realistic_indoor.envs.actions import DISCRETE_ACTIONS, PRIMITIVE_ACTION_TYPES, ActionMap
-from realistic_indoor.envs.config import EnvConfig, base_config, require_reset_options, require_task_fields
+from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
+from realistic_indoor.envs.presets import base_config
 from realistic_indoor.envs.rewards import term_weights
 from realistic_indoor.envs.source import episode_building
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
@@ -124,6 +125,11 @@ class BatchedExploreEnv(VectorEnv):
             raise ConfigError(
                 f"the native vector env runs primitive actions (continuous, discrete), got action_type "
                 f"{self.config.action_type!r}; use gym.make_vec(..., vectorization_mode='sync') for macro actions"
+            )
+        if self.config.observation_extras:
+            raise ConfigError(
+                f"the native vector env has no extra observations, got {list(self.config.observation_extras)}; "
+                "use gym.make_vec(..., vectorization_mode='sync') for them"
             )
         if self.config.rewards.coverage_auc != 0.0:
             raise ConfigError(

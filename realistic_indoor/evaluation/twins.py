@@ -48,6 +48,7 @@ import numpy as np
 from realistic_indoor.checks import require_int
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.evaluation.aggregate import bootstrap_mean, wilson
+from realistic_indoor.evaluation.twins_report import CONNECTED, FORMAT, write_outputs
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
@@ -85,13 +86,6 @@ SETS = ("real", "twins")
 
 TARGET = 0.9
 """Coverage whose first crossing is timed (the evaluation's default target)."""
-
-CONNECTED = 0.9
-"""Share of the floor area the robot's start must reach for a plan and its twin to count as
-connected; pairs below it are reported, and left out of the paired differences of connected pairs."""
-
-FORMAT = 1
-"""Version of the ``behaviour_realism.json`` layout."""
 
 
 class ClampedAreaWarning(UserWarning):
@@ -460,7 +454,6 @@ def behaviour_realism(
         PlanFormatError: Under ``strict``, for the first plan that cannot be read.
     """
     from realistic_indoor.evaluation import run_evaluation
-    from realistic_indoor.evaluation.twins_report import write_outputs
     from realistic_indoor.files import check_output_dir
     from realistic_indoor.generator import area_limits
 

@@ -16,7 +16,14 @@ from typing import Any
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path, atomic_write, write_text
 
-__all__ = ["NAME", "draw_figure", "load_study", "render_report", "write_outputs"]
+__all__ = ["CONNECTED", "FORMAT", "NAME", "draw_figure", "load_study", "render_report", "write_outputs"]
+
+CONNECTED = 0.9
+"""Share of the floor area the robot's start must reach for a plan and its twin to count as
+connected; pairs below it are reported, and left out of the paired differences of connected pairs."""
+
+FORMAT = 1
+"""Version of the ``behaviour_realism.json`` layout."""
 
 NAME = "behaviour_realism"
 """Stem of the report, figure and JSON file."""
@@ -54,8 +61,6 @@ def load_study(path: str | Path) -> dict[str, Any]:
     Raises:
         ConfigError: If the file is missing or is not such a file.
     """
-    from realistic_indoor.evaluation.twins import FORMAT
-
     path = Path(path)
     try:
         data = json.loads(path.read_text(encoding="utf-8"), object_hook=_unplain)
@@ -153,8 +158,6 @@ def _cut_off_lines(data: dict[str, Any]) -> list[str]:
     With one twin per plan these are the cut-off pairs; with several, a line per plan gives its
     twins' shares together.
     """
-    from realistic_indoor.evaluation.twins import CONNECTED
-
     one = _twins_per_plan(data) == 1
     names = _cut_names(data)
     plans = list(dict.fromkeys(p["name"] for p in data["plans"]))

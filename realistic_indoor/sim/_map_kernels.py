@@ -15,7 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.raster import RASTER_FREE, RASTER_WALL
+from realistic_indoor.sim.cells import RASTER_FREE, RASTER_WALL
 
 MAPPED_UNKNOWN, MAPPED_FREE, MAPPED_OCCUPIED = 0, 1, 2
 """States of a cell of the robot's map (uint8); a higher state wins when cells are pooled."""
@@ -535,3 +535,32 @@ def _pixel(pooled, lut, x, y, unknown):  # pragma: no cover - compiled
     if c < np.uint64(pooled.shape[1]) and r < np.uint64(pooled.shape[0]):
         return lut[pooled[r, c]]
     return unknown
+
+
+@njit(cache=True, nogil=True)
+def scatter_global(pooled, rx, ry, cos0, sin0, scale, free, wall):  # pragma: no cover - compiled
+    """Mark the pixels of a fixed-orientation image that hold known free and wall cells.
+
+    The image is centred on ``(rx, ry)`` (pooled-cell units) with the direction ``(cos0, sin0)``
+    up; ``scale`` is pixels per pooled cell. Each known pooled cell sets ``wall`` (occupied) or
+    ``free`` (free) to 255 at the pixel its centre falls in; pixels are not cleared first.
+    """
+    h, w = pooled.shape
+    s = free.shape[0]
+    half = s / 2.0
+    for i in range(h):
+        dy = i + 0.5 - ry
+        for j in range(w):
+            state = pooled[i, j]
+            if state == MAPPED_UNKNOWN:
+                continue
+            dx = j + 0.5 - rx
+            ahead = (dx * cos0 + dy * sin0) * scale
+            left = (dy * cos0 - dx * sin0) * scale
+            r = math.floor(half - ahead)
+            c = math.floor(half - left)
+            if 0 <= r < s and 0 <= c < s:
+                if state == MAPPED_OCCUPIED:
+                    wall[r, c] = 255
+                else:
+                    free[r, c] = 255

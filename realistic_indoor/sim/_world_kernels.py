@@ -12,7 +12,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.sim._edt import column_squares, row_distances, row_scratch
-from realistic_indoor.sim.raster import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
+from realistic_indoor.sim.cells import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
 __all__ = [
     "clear_at_least",

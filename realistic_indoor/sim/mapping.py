@@ -23,6 +23,7 @@ from realistic_indoor.sim._map_kernels import (
     integrate_scan,
     map_targets,
     render_local,
+    scatter_global,
     start_bits,
     unknown_bits,
 )
@@ -243,6 +244,42 @@ class RobotMap:
             out,
         )
         return out
+
+    def global_view(
+        self,
+        centre_xy: tuple[float, float],
+        up_rad: float,
+        resolution_m: float,
+        free: np.ndarray,
+        wall: np.ndarray,
+    ) -> None:
+        """Mark the known floor and walls of the whole map on a fixed-orientation image.
+
+        The image is centred on ``centre_xy`` with the direction ``up_rad`` up; each pixel
+        (``resolution_m`` across) that holds a mapped free cell gets 255 in ``free``, one that
+        holds a mapped wall cell 255 in ``wall`` (both can), as :meth:`local_view` pools them
+        (at ``local_map.resolution_m``). Pixels are not cleared first.
+
+        Args:
+            centre_xy: The image's centre (m, plan frame).
+            up_rad: The plan-frame direction shown up (rad).
+            resolution_m: Side of a pixel (m).
+            free: ``(S, S)`` uint8 image to mark free floor on.
+            wall: ``(S, S)`` uint8 image to mark walls on.
+
+        Cost: one pass over the pooled map (about 0.1-0.3 ms for a 2,000 m2 office).
+        """
+        cell = self._res * self._pool
+        scatter_global(
+            self._pooled,
+            (centre_xy[0] - self._x0) / cell,
+            (centre_xy[1] - self._y0) / cell,
+            math.cos(up_rad),
+            math.sin(up_rad),
+            cell / resolution_m,
+            free,
+            wall,
+        )
 
     def _set_beams(self, offsets: np.ndarray) -> None:
         self._offsets = offsets

@@ -10,14 +10,12 @@ import numpy as np
 
 from realistic_indoor.building.walls import DOOR_GAP_DEPTH_M
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.cells import RASTER_FREE, RASTER_OUTSIDE, RASTER_WALL
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
 __all__ = ["MAX_RASTER_CELLS", "RASTER_FREE", "RASTER_OUTSIDE", "RASTER_WALL", "OccupancyRaster", "rasterize"]
-
-RASTER_FREE, RASTER_WALL, RASTER_OUTSIDE = 0, 1, 2
-"""Cell values (uint8): floor inside a room or doorway, wall, outside the building."""
 
 DEFAULT_RESOLUTION_M = 0.05
 DEFAULT_WALL_THICKNESS_M = 0.1

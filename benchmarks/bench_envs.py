@@ -40,8 +40,6 @@ from __future__ import annotations
 import argparse
 import gc
 import json
-import os
-import platform
 import statistics
 import time
 import tracemalloc
@@ -56,6 +54,7 @@ from realistic_indoor.envs import PRESETS, preset_config
 from realistic_indoor.envs.simulation import Simulation
 from realistic_indoor.envs.vector import step_threads
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.machine import describe_machine
 
 AREAS_M2 = (250, 500, 1000, 2000, 4000)
 YARDSTICK = "CartPole-v1"
@@ -141,16 +140,7 @@ def _json_object(text: str) -> dict:
 
 def machine() -> str:
     """CPU model, logical cores and the load average: what the absolute figures depend on."""
-    model = platform.processor() or platform.machine()
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    load = ", ".join(f"{x:.1f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
-    return f"{model}, {os.cpu_count()} logical cores, load average {load} (1, 5, 15 min)"
+    return describe_machine()
 
 
 def _table(title: str, key: str, rows: list[tuple[str, str, dict]], args: argparse.Namespace) -> None:

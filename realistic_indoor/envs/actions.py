@@ -14,8 +14,8 @@ __all__ = ["ACTION_TYPES", "DISCRETE_ACTIONS", "PRIMITIVE_ACTION_TYPES", "Action
 
 PRIMITIVE_ACTION_TYPES = ("continuous", "discrete")
 """Action types whose action is a velocity command (:class:`ActionMap`)."""
-ACTION_TYPES = (*PRIMITIVE_ACTION_TYPES, "frontier")
-"""Names accepted by :attr:`EnvConfig.action_type`; ``"frontier"`` chooses a goal
+ACTION_TYPES = (*PRIMITIVE_ACTION_TYPES, "frontier", "waypoint")
+"""Names accepted by :attr:`EnvConfig.action_type`; ``"frontier"`` and ``"waypoint"`` choose a goal
 (:mod:`realistic_indoor.envs.macro`)."""
 
 _NAMES = ", ".join(name for name, _, _ in DISCRETE_ACTIONS)

@@ -9,7 +9,7 @@ from typing import Any
 
 from realistic_indoor.checks import require_int, require_range
 from realistic_indoor.envs.actions import ACTION_TYPES
-from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, MacroConfig
+from realistic_indoor.envs.macro import MacroConfig
 from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS, GlobalMapConfig
 from realistic_indoor.envs.rewards import RewardWeights
 from realistic_indoor.envs.source import (
@@ -79,16 +79,18 @@ class EnvConfig:
         max_steps: Control steps after which an episode is truncated (``1 / robot.control_hz``
             s each).
         action_type: ``"continuous"`` (``Box(-1, 1, (2,))``), ``"discrete"``
-            (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`) or ``"frontier"``
+            (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`), ``"frontier"``
             (``Discrete(macro.n_candidates)``: a candidate goal, driven to by the explorers'
-            navigator; :mod:`realistic_indoor.envs.macro`).
-        macro: Candidates per decision and the navigator's settings, for
-            ``action_type="frontier"`` (ignored otherwise).
+            navigator) or ``"waypoint"`` (``Discrete(macro.waypoint_grid ** 2)``: a cell of a grid
+            around the robot); :mod:`realistic_indoor.envs.macro`.
+        macro: Candidates per decision, the waypoint grid and the navigator's settings, for
+            the macro action types (ignored otherwise).
         extra_observations: Observation keys added to the task's own: any of ``"global_map"``
             (the robot's whole map around it, start heading up: :attr:`global_map`),
-            ``"candidates"`` (macro actions only) and ``"time_left"`` (the share of the step
-            limit left). ``None``: the action type's default, ``("candidates", "time_left")``
-            with macro actions, none with primitive ones.
+            ``"candidates"`` (frontier macro actions only) and ``"time_left"`` (the share of the
+            step limit left). ``None``: the action type's default: ``("candidates",
+            "time_left")`` with frontier actions, ``("global_map", "time_left")`` with waypoint
+            actions, none with primitive ones.
         global_map: Size (pixels) and pixel side (m) of the ``global_map`` observation.
     """
 
@@ -122,7 +124,9 @@ class EnvConfig:
         """The extra observation keys in force: :attr:`extra_observations`, or the action type's default."""
         if self.extra_observations is not None:
             return self.extra_observations
-        return ("candidates", "time_left") if self.action_type in MACRO_ACTION_TYPES else ()
+        return {"frontier": ("candidates", "time_left"), "waypoint": ("global_map", "time_left")}.get(
+            self.action_type, ()
+        )
 
     def _check_extra_observations(self) -> None:
         extras = self.extra_observations
@@ -139,9 +143,9 @@ class EnvConfig:
                 f"EnvConfig.extra_observations: unknown {', '.join(map(repr, unknown))}; "
                 f"valid: {', '.join(EXTRA_OBSERVATIONS)}"
             )
-        if "candidates" in extras and self.action_type not in MACRO_ACTION_TYPES:
+        if "candidates" in extras and self.action_type != "frontier":
             raise ConfigError(
-                "EnvConfig.extra_observations: 'candidates' needs macro actions (action_type='frontier'), "
+                "EnvConfig.extra_observations: 'candidates' needs frontier macro actions (action_type='frontier'), "
                 f"got action_type {self.action_type!r}"
             )
         object.__setattr__(self, "extra_observations", tuple(dict.fromkeys(extras)))

@@ -11,7 +11,7 @@ from gymnasium import spaces
 from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
 from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
-from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, FrontierActions
+from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, MACRO_ACTIONS, MacroActions
 from realistic_indoor.envs.observations import GlobalMapObservation, explore_observations
 from realistic_indoor.envs.presets import base_config
 from realistic_indoor.envs.rewards import auc_weight, reward_terms, weighted_sum
@@ -58,7 +58,9 @@ class ExploreEnv(gym.Env):
     (in search the next detected victim, then the reachable frontiers, nearest first), driven
     to by the map-based explorers' navigator until it would replan, over several primitive
     steps (:mod:`realistic_indoor.envs.macro`); :meth:`action_masks` says which candidates
-    exist. Always choosing 0 drives as the nearest-frontier explorer does.
+    exist. Always choosing 0 drives as the nearest-frontier explorer does. With
+    ``action_type="waypoint"`` it is ``Discrete(macro.waypoint_grid ** 2)`` (49): a cell of a
+    grid around the robot, start heading up, snapped to reachable known floor.
 
     ## Observation Space
 
@@ -149,7 +151,7 @@ class ExploreEnv(gym.Env):
     | `rewards`         | `RewardWeights`      | see above   | weight of each reward term                    |
     | `coverage_target` | `float`              | 0.9         | coverage that ends the episode                |
     | `max_steps`       | `int`                | preset      | steps before truncation                       |
-    | `action_type`     | `str`                | continuous  | `"continuous"`, `"discrete"` or `"frontier"`  |
+    | `action_type`     | `str`                | continuous  | `"continuous"`, `"discrete"`, `"frontier"` or `"waypoint"` |
     | `macro`           | `MacroConfig`        | 16 candidates | candidate goals per decision, navigator settings (`"frontier"` only) |
     | `extra_observations` | tuple of names    | `None`      | `global_map`, `candidates`, `time_left` (default: the latter two with macro actions) |
     | `global_map`      | `GlobalMapConfig`    | 128 px, 0.5 m | size and pixel side of the `global_map` observation |
@@ -344,11 +346,11 @@ class ExploreEnv(gym.Env):
             )
         return obs
 
-    def _make_macro(self) -> FrontierActions:
-        """The macro actions' navigator, for the robot the observations describe."""
+    def _make_macro(self) -> MacroActions:
+        """The macro actions and their navigator, for the robot the observations describe."""
         victims = self.config.victims if "victims" in self._observations else None
         spec = RobotSpec(self.config.lidar, self.config.robot, victims, "continuous")
-        return FrontierActions(spec, self.config.macro)
+        return MACRO_ACTIONS[self.config.action_type](spec, self.config.macro)
 
     def render(self) -> np.ndarray | None:
         """A top view of the episode: the plan, the robot's map, the trajectory, the scan, the robot.

@@ -3,20 +3,21 @@
 With ``action_type="frontier"`` an environment's action is an index into the K best candidate
 goals (``Discrete(K)``, :attr:`MacroConfig.n_candidates`, 16 by default): in search the next
 detected victim not yet visited, if one is reachable, then one goal per frontier component of
-the robot's own map, nearest first by path cost. The robot's
-:class:`~realistic_indoor.navigation.navigator.Navigator` (the map, planner, follower and
-reflexes of the map-based explorers) plans a path to the chosen goal and drives it, one
-primitive control step after another, until it would replan: the goal is reached or no longer
-borders unobserved space, the path is blocked, the robot bumped, a victim was newly detected, or
-``replan_steps`` steps passed while the map grew. There the environment asks for the next
-decision. A policy that always chooses 0 therefore drives exactly as the nearest-frontier
-explorer (``frontier``) does.
+the robot's own map, nearest first by path cost. With ``action_type="waypoint"`` it is a cell
+of a coarse grid around the robot (:class:`WaypointActions`), snapped to the nearest reachable
+known free cell. The robot's :class:`~realistic_indoor.navigation.navigator.Navigator` (the
+map, planner, follower and reflexes of the map-based explorers) plans a path to the chosen goal
+and drives it, one primitive control step after another, until it would replan: the goal is
+reached (or, for a frontier, no longer borders unobserved space), the path is blocked, the robot
+bumped, a victim was newly detected, or ``replan_steps`` steps passed while the map grew. There
+the environment asks for the next decision. A policy that always chooses frontier candidate 0
+therefore drives exactly as the nearest-frontier explorer (``frontier``) does.
 
-:meth:`FrontierActions.action_masks` says which candidates exist (for sb3-contrib's
-``MaskablePPO``); a masked choice is replaced by candidate 0 (``info["fallback"]``). Where the
-navigator finds nothing to go to it does what the classical explorer does, waiting and looking
-again every ``replan_steps`` steps, within the same decision, until something appears or the
-episode ends.
+:meth:`MacroActions.action_masks` says which actions offer a goal (for sb3-contrib's
+``MaskablePPO``); a masked choice is replaced by the first allowed action, candidate 0 for
+frontiers (``info["fallback"]``). Where the navigator finds nothing to go to it does what the
+classical explorer does, waiting and looking again every ``replan_steps`` steps, within the same
+decision, until something appears or the episode ends.
 """
 
 from __future__ import annotations
@@ -31,22 +32,25 @@ from gymnasium import spaces
 from realistic_indoor.checks import require_int, require_positive
 from realistic_indoor.envs.actions import discrete_index
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.navigation.goals import off_circulation, unobserved_area_near
+from realistic_indoor.navigation.goals import nearest_points, off_circulation, unobserved_area_near
 from realistic_indoor.navigation.navigator import ExplorerConfig, Found, Navigator, PlanOptions
-from realistic_indoor.navigation.planning import nearest_labels, trace_path
+from realistic_indoor.navigation.planning import dijkstra, nearest_labels, trace_path
 from realistic_indoor.navigation.regions import RegionConfig, find_regions
 from realistic_indoor.navigation.spec import RobotSpec
 
 __all__ = [
     "CANDIDATE_FEATURES",
+    "MACRO_ACTIONS",
     "MACRO_ACTION_TYPES",
     "Candidates",
     "FrontierActions",
+    "MacroActions",
     "MacroConfig",
+    "WaypointActions",
     "rank_candidates",
 ]
 
-MACRO_ACTION_TYPES = ("frontier",)
+MACRO_ACTION_TYPES = ("frontier", "waypoint")
 """Action types whose action chooses a goal rather than a velocity."""
 
 CANDIDATE_FEATURES = (
@@ -90,6 +94,9 @@ class MacroConfig:
             as the structure explorer does.
         reach_m: A frontier within this distance of a corridor's or hall's core is not in a
             room (m).
+        waypoint_grid: Side of the ``"waypoint"`` actions' grid (cells; odd, >= 3: the robot
+            stands in the middle cell); the action space is ``Discrete(waypoint_grid ** 2)``.
+        waypoint_cell_m: Side of a cell of that grid (m).
     """
 
     n_candidates: int = 16
@@ -97,9 +104,17 @@ class MacroConfig:
     gain_radius_m: float = 3.0
     regions: RegionConfig = field(default_factory=RegionConfig)
     reach_m: float = 0.25
+    waypoint_grid: int = 7
+    waypoint_cell_m: float = 2.0
 
     def __post_init__(self) -> None:
         require_int("MacroConfig", "n_candidates", self.n_candidates, 1)
+        require_int("MacroConfig", "waypoint_grid", self.waypoint_grid, 3)
+        if self.waypoint_grid % 2 == 0:
+            raise ConfigError(
+                f"MacroConfig.waypoint_grid must be odd (the robot in the middle cell), got {self.waypoint_grid}"
+            )
+        require_positive("MacroConfig", "waypoint_cell_m", self.waypoint_cell_m, "m")
         require_positive("MacroConfig", "gain_radius_m", self.gain_radius_m, "m")
         require_positive("MacroConfig", "reach_m", self.reach_m, "m")
         if not isinstance(self.regions, RegionConfig):
@@ -195,31 +210,39 @@ def _path_cost_m(ctx: Any, parent: np.ndarray, goal: int) -> float:
     return float(np.sum(steps * ctx.cost[cells[1:, 0], cells[1:, 1]]) * ctx.resolution_m)
 
 
-class FrontierActions:
-    """The ``"frontier"`` macro actions of one environment: candidates, masks, the navigator.
+class MacroActions:
+    """Macro actions of one environment: decisions, masks, the navigator (the shared part).
 
     The environment calls :meth:`reset` with its first observation, :meth:`choose` with each
     action, then :meth:`command` and :meth:`sense` once per primitive step until :meth:`sense`
-    asks for a decision.
+    asks for a decision. A subclass says what the K actions offer (:meth:`_offer`).
 
     Args:
         spec: The robot (its action type is ``"continuous"``: the commands the navigator sends).
         config: The macro settings.
+        k: Number of actions.
 
     Attributes:
-        space: ``Discrete(n_candidates)``.
+        space: ``Discrete(k)``.
         navigator: The navigator that drives.
-        candidates: The candidates of the pending decision (``None`` when none is pending: only
-            after a reset in which there was nothing to go to).
+        candidates: The goals of the pending decision (``None`` when none is pending: only after
+            a reset in which there was nothing to go to).
     """
 
-    def __init__(self, spec: RobotSpec, config: MacroConfig) -> None:
+    what = "macro action"
+    """What an action is, for messages."""
+    meaning = "an index into the goals offered"
+    frontier_goals = True
+    """Whether goals are frontiers (given up once no longer bordering unobserved space)."""
+
+    def __init__(self, spec: RobotSpec, config: MacroConfig, k: int) -> None:
         self.spec = spec
         self.config = config
-        self.k = config.n_candidates
-        self.space = spaces.Discrete(self.k)
+        self.k = k
+        self.space = spaces.Discrete(k)
         self.navigator = Navigator(spec, config.navigator)
         self.candidates: Candidates | None = None
+        self._mask = np.zeros(k, dtype=bool)
         self._options: PlanOptions | None = None
 
     def reset(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> None:
@@ -231,45 +254,49 @@ class FrontierActions:
     def sense(self, obs: dict[str, np.ndarray], info: dict[str, Any]) -> bool:
         """Take a primitive step's observation; whether a decision is now pending.
 
-        Where the navigator wants a goal but there is no candidate, it is told so at once (it
+        Where the navigator wants a goal but no action offers one, it is told so at once (it
         waits, as the classical explorer does) and no decision is asked.
         """
         if not self.navigator.sense(obs, info):
             return False
         options = self.navigator.options()
-        candidates = rank_candidates(options, self.config, self.navigator)
-        if candidates.count == 0:
+        candidates, mask = self._offer(options)
+        if not mask.any():
             self.navigator.commit(options, None)
             return False
-        self.candidates, self._options = candidates, options
+        self.candidates, self._options, self._mask = candidates, options, mask
         return True
 
     def action_masks(self) -> np.ndarray:
-        """``(K,)`` bool: which actions choose a candidate that exists.
+        """``(K,)`` bool: which actions offer a goal now.
 
         With no decision pending (nothing to go to at the start), action 0 alone is allowed: it
         means "carry on".
         """
-        mask = np.zeros(self.k, dtype=bool)
-        mask[: self.candidates.count if self.candidates is not None else 1] = True
-        return mask
+        if self.candidates is None:
+            return np.arange(self.k) == 0
+        return self._mask.copy()
 
     def choose(self, action: object) -> tuple[int, bool]:
-        """Commit the navigator to the candidate ``action`` chose.
+        """Commit the navigator to the goal ``action`` chose.
 
         Returns:
-            ``(candidate index used, whether the choice was masked and replaced by 0)``.
+            ``(action used, whether the chosen one was masked and replaced)``: a masked action
+            is replaced by the first allowed one (candidate 0 for frontiers).
 
         Raises:
             ActionError: If ``action`` is not an integer in ``0..K-1``.
         """
-        index = discrete_index(action, self.k, "frontier action", "an index into the candidate goals")
+        index = discrete_index(action, self.k, self.what, self.meaning)
         if self.candidates is None:
             return 0, index != 0
-        fallback = index >= self.candidates.count
-        used = 0 if fallback else index
+        fallback = not self._mask[index]
+        used = int(np.argmax(self._mask)) if fallback else index
         self.navigator.commit(
-            self._options, self.candidates.goals[used], to_victim=self.candidates.victim[used]
+            self._options,
+            self.candidates.goals[used],
+            to_victim=self.candidates.victim[used],
+            frontier=self.frontier_goals,
         )
         self.candidates = self._options = None
         return used, fallback
@@ -279,7 +306,7 @@ class FrontierActions:
         return self.spec.action(*self.navigator.command())
 
     def marks(self, start_pose: tuple[float, float, float]) -> dict[str, np.ndarray | None]:
-        """The pending candidates and the current goal in the plan's frame, for the top view.
+        """The pending goals offered and the current goal in the plan's frame, for the top view.
 
         Args:
             start_pose: The episode's start ``(x m, y m, heading rad)`` in the plan's frame: the
@@ -296,10 +323,33 @@ class FrontierActions:
             return np.stack([x0 + c * xy[:, 0] - s * xy[:, 1], y0 + s * xy[:, 0] + c * xy[:, 1]], axis=1)
 
         goal = self.navigator.goal
-        return {
-            "candidates_xy": None if self.candidates is None else to_plan(self.candidates.xy),
-            "goal_xy": None if goal is None else to_plan(np.array(goal))[0],
-        }
+        offered = None
+        if self.candidates is not None:
+            offered = to_plan(self.candidates.xy[self._mask[: len(self.candidates.xy)]])
+        return {"candidates_xy": offered, "goal_xy": None if goal is None else to_plan(np.array(goal))[0]}
+
+    def _offer(self, options: PlanOptions) -> tuple[Candidates, np.ndarray]:
+        """The goals the K actions offer, and which actions offer one (``(K,)`` bool)."""
+        raise NotImplementedError
+
+
+class FrontierActions(MacroActions):
+    """The ``"frontier"`` macro actions: the K best candidate goals (see the module docstring).
+
+    Args:
+        spec: The robot (its action type is ``"continuous"``).
+        config: The macro settings (``n_candidates`` is K).
+    """
+
+    what = "frontier action"
+    meaning = "an index into the candidate goals"
+
+    def __init__(self, spec: RobotSpec, config: MacroConfig) -> None:
+        super().__init__(spec, config, config.n_candidates)
+
+    def _offer(self, options: PlanOptions) -> tuple[Candidates, np.ndarray]:
+        candidates = rank_candidates(options, self.config, self.navigator)
+        return candidates, np.arange(self.k) < candidates.count
 
     def features(self) -> np.ndarray:
         """The ``candidates`` observation: ``(K * F,)`` float32, ``F = len(CANDIDATE_FEATURES)``.
@@ -333,3 +383,58 @@ class FrontierActions:
         high = np.full(low.shape, _MAX_LENGTH, dtype=np.float32)
         high[:, [0, 3, 4, 7, 8]] = 1.0
         return spaces.Box(low.ravel(), high.ravel(), dtype=np.float32)
+
+
+class WaypointActions(MacroActions):
+    """The ``"waypoint"`` macro actions: a cell of a coarse grid around the robot.
+
+    The grid (``waypoint_grid`` x ``waypoint_grid`` cells of ``waypoint_cell_m``, 7 x 2 m by
+    default) is centred on the robot and turned with the heading it started with: action ``i *
+    G + j`` is row ``i`` (0 ahead, along the start heading) and column ``j`` (0 to the left), as
+    the ``global_map`` observation draws the map. The cell's centre is snapped to the nearest
+    known free cell the robot can reach (ties to the cheaper path); actions whose snapped goal
+    lies within ``navigator.min_goal_m`` of the robot are masked. The navigator drives there
+    and asks again when it arrives, is blocked or bumps, or when its map has grown (every
+    ``replan_steps`` steps).
+
+    Args:
+        spec: The robot (its action type is ``"continuous"``).
+        config: The macro settings.
+    """
+
+    what = "waypoint action"
+    meaning = "a cell of the waypoint grid, row by row from ahead-left"
+    frontier_goals = False
+
+    def __init__(self, spec: RobotSpec, config: MacroConfig) -> None:
+        super().__init__(spec, config, config.waypoint_grid**2)
+
+    def targets(self) -> np.ndarray:
+        """``(K, 2)`` the grid cells' centres around the robot (m, odometry frame)."""
+        g, cell = self.config.waypoint_grid, self.config.waypoint_cell_m
+        rows, cols = np.divmod(np.arange(g * g), g)
+        x, y, _ = self.navigator.pose
+        ahead = (g / 2 - rows - 0.5) * cell
+        left = (g / 2 - cols - 0.5) * cell
+        return np.stack([x + ahead, y + left], axis=1)
+
+    def _offer(self, options: PlanOptions) -> tuple[Candidates, np.ndarray]:
+        ctx = options.ctx
+        dist, parent, _ = dijkstra(
+            ctx.cost, ctx.start, np.zeros(ctx.cost.shape, dtype=bool), first_only=False
+        )
+        rows, cols = np.nonzero(np.isfinite(dist))
+        points = self.navigator.map.to_world(rows + ctx.box.r0, cols + ctx.box.c0).reshape(-1, 2)
+        nearest = nearest_points(points, self.targets(), dist[rows, cols])
+        xy = points[nearest]
+        flat = rows[nearest] * ctx.state.shape[1] + cols[nearest]
+        x, y, _ = self.navigator.pose
+        mask = np.hypot(xy[:, 0] - x, xy[:, 1] - y) >= self.config.navigator.min_goal_m
+        goals = [(int(f), parent) for f in flat]
+        zeros = np.zeros(self.k)
+        cost = dist[rows[nearest], cols[nearest]] * ctx.resolution_m
+        return Candidates(goals, [False] * self.k, xy, cost, zeros, zeros, zeros.astype(bool)), mask
+
+
+MACRO_ACTIONS: dict[str, type[MacroActions]] = {"frontier": FrontierActions, "waypoint": WaypointActions}
+"""The class of each macro action type."""

@@ -9,6 +9,7 @@ use: the unobserved area near it, and whether it lies off the corridors and hall
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 from scipy import ndimage
 
 from realistic_indoor.navigation.frontiers import Frontiers
@@ -16,7 +17,7 @@ from realistic_indoor.navigation.navigator import Found, PlanContext
 from realistic_indoor.navigation.planning import dijkstra
 from realistic_indoor.navigation.regions import Regions
 
-__all__ = ["frontier_costs", "nearest_frontier", "off_circulation", "unobserved_area_near"]
+__all__ = ["frontier_costs", "nearest_frontier", "nearest_points", "off_circulation", "unobserved_area_near"]
 
 
 def nearest_frontier(frontiers: Frontiers, ctx: PlanContext) -> Found | None:
@@ -107,3 +108,38 @@ def off_circulation(frontiers: Frontiers, regions: Regions, reach_cells: int) ->
                 near |= circulation[r, c]
     touching = np.bincount(frontiers.labels[rows, cols], weights=near, minlength=frontiers.count + 1)
     return touching[1:] == 0
+
+
+def nearest_points(points: np.ndarray, targets: np.ndarray, tie: np.ndarray) -> np.ndarray:
+    """For each target, the index of the nearest point (Euclidean), ties to the smaller ``tie``.
+
+    Args:
+        points: ``(N, 2)`` candidate points (N >= 1).
+        targets: ``(M, 2)`` points to snap.
+        tie: ``(N,)`` what decides between equally near points (a path cost, say); then the
+            smaller index.
+
+    Returns:
+        ``(M,)`` int64 indices into ``points``.
+    """
+    return _nearest_points(
+        np.ascontiguousarray(points, dtype=np.float64),
+        np.ascontiguousarray(targets, dtype=np.float64),
+        np.ascontiguousarray(tie, dtype=np.float64),
+    )
+
+
+@njit(cache=True)
+def _nearest_points(points, targets, tie):  # pragma: no cover - compiled
+    out = np.empty(len(targets), dtype=np.int64)
+    for t in range(len(targets)):
+        best, best_d, best_tie = 0, np.inf, np.inf
+        tx, ty = targets[t, 0], targets[t, 1]
+        for i in range(len(points)):
+            dx = points[i, 0] - tx
+            dy = points[i, 1] - ty
+            d = dx * dx + dy * dy
+            if d < best_d or (d == best_d and tie[i] < best_tie):
+                best, best_d, best_tie = i, d, tie[i]
+        out[t] = best
+    return out

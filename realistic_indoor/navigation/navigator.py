@@ -201,6 +201,7 @@ class Navigator:
         self.goal: tuple[float, float] | None = None
         self.pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self._victim: int | None = None
+        self._frontier_goal = True
         self._since_plan = 0
         self._new_cells = 0
         self._new_victims = 0
@@ -293,7 +294,7 @@ class Navigator:
             if self._victim is not None:
                 self.victims.visited[self._victim] = True
             return True
-        if self._victim is None and (self.goal is None or not self._goal_open()):
+        if self._victim is None and (self.goal is None or (self._frontier_goal and not self._goal_open())):
             return True
         if self._path_blocked():
             return True
@@ -359,7 +360,9 @@ class Navigator:
         )
         return PlanOptions(ctx, frontiers.without(drop), victim, victim_path)
 
-    def commit(self, options: PlanOptions, found: Found | None, to_victim: bool = False) -> None:
+    def commit(
+        self, options: PlanOptions, found: Found | None, to_victim: bool = False, frontier: bool = True
+    ) -> None:
         """Drive to ``found`` from now on (``None``: nothing to go to).
 
         Args:
@@ -367,7 +370,10 @@ class Navigator:
             found: The chosen goal, a cell of ``options.ctx``'s window with a parent array that
                 leads there from the robot; ``None`` if there is nothing to go to.
             to_victim: Whether ``found`` is the path to ``options.victim``.
+            frontier: Whether the goal is a frontier, to be given up once it no longer borders
+                unobserved space; ``False`` for a waypoint, kept until reached (or blocked).
         """
+        self._frontier_goal = frontier
         self._since_plan = 0
         self._new_cells = 0
         self._new_victims = 0

@@ -288,3 +288,48 @@ def test_candidate_features__room_and_unobserved_area_are_measured():
     assert area.max() > 5.0  # some frontier opens on unseen floor
     in_room = rows[:, CANDIDATE_FEATURES.index("in_room")]
     assert set(np.unique(in_room)) == {0.0, 1.0}  # both kinds of frontier occur
+
+
+def test_waypoints__lie_on_the_grid_around_the_robot_start_heading_up():
+    env = gym.make("OfficeExplore-v0", area_m2=600.0, action_type="waypoint")
+    env.reset(seed=3)
+    macro = env.unwrapped._macro
+    assert env.action_space.n == 49
+    targets = macro.targets()  # odometry frame at the start pose (0, 0, 0): x ahead, y to the left
+    assert np.allclose(targets[0 * 7 + 3], [6.0, 0.0])  # row 0, middle column: 6 m ahead
+    assert np.allclose(targets[3 * 7 + 0], [0.0, 6.0])  # middle row, column 0: 6 m to the left
+    assert np.allclose(targets[6 * 7 + 6], [-6.0, -6.0])  # behind and to the right
+    mask = env.unwrapped.action_masks()
+    assert not mask[3 * 7 + 3]  # the robot's own cell is no goal
+
+
+def test_waypoints__snap_to_reachable_known_floor_and_drive_there():
+    from realistic_indoor.sim.mapping import MAPPED_FREE
+
+    env = gym.make("OfficeExplore-v0", area_m2=600.0, action_type="waypoint")
+    obs, _ = env.reset(seed=3)
+    macro = env.unwrapped._macro
+    own = macro.navigator.map
+    offered = macro.candidates.xy
+    for x, y in offered:
+        assert own.state[own.to_cell(x, y)] == MAPPED_FREE
+    ahead = 2 * 7 + 3  # 2 m ahead of the robot, on the floor it sees through the entrance
+    assert np.hypot(*(offered[ahead] - macro.targets()[ahead])) <= 0.1 * np.sqrt(2) / 2 + 1e-9
+    x0 = float(obs["pose"][0])
+    obs, _, _, _, info = env.step(ahead)
+    assert not info["fallback"]
+    assert float(obs["pose"][0]) > x0 + 1.0  # it drove ahead
+
+
+def test_waypoint_env__passes_check_env():
+    from stable_baselines3.common.env_checker import check_env as sb3_check_env
+
+    env = make_env("HouseSearch-v0", action_type="waypoint")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_env(env.unwrapped)
+        sb3_check_env(env.unwrapped, warn=True)
+    with pytest.raises(ConfigError, match="odd"):
+        gym.make("HouseExplore-v0", action_type="waypoint", macro={"waypoint_grid": 4})
+    with pytest.raises(ActionError, match=r"waypoint action must be in 0\.\.48"):
+        env.unwrapped.step(49)

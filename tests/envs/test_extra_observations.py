@@ -108,7 +108,7 @@ def test_extra_observations__bad_names_are_one_line_errors():
     with pytest.raises(ConfigError, match="unknown 'map'") as error:
         gym.make("HouseExplore-v0", extra_observations=["map"])
     assert "\n" not in str(error.value)
-    with pytest.raises(ConfigError, match="'candidates' needs macro actions"):
+    with pytest.raises(ConfigError, match="'candidates' needs frontier macro actions"):
         gym.make("HouseExplore-v0", extra_observations=["candidates"])
     with pytest.raises(ConfigError, match="tuple of names"):
         gym.make("HouseExplore-v0", extra_observations="global_map")

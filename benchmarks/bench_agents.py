@@ -3,7 +3,9 @@
 For ``OfficeExplore-v0`` with its default config (offices of the generator's default size, the
 registered step limit), prints for each agent the share of seeds whose episode reached 90%
 coverage within the step limit (with a 95% Wilson interval), the steps it took (median over the
-episodes that got there), the coverage at the end, and the agent's thinking time per step. The
+episodes that got there), the coverage at the end, the agent's thinking time per step, and for
+agents that choose goals (the map-based and learned explorers) the steps per decision and the
+thinking time per decision (decisions/s is its inverse). The
 target of the project: the frontier explorer reaches 90% in at least 90% of seeds; the random
 agent much less often.
 
@@ -45,8 +47,11 @@ def main(argv: list[str] | None = None) -> None:
     search = any(r.victims_total for r in results)
     goal = "found all victims" if search else "reached 90%"
     print(f"# Agents on {args.env}, default buildings, {args.episodes} seeds, step limit {limit}\n")
-    print(f"| agent | {goal} | steps to it (min / median / max) | final coverage (mean) | agent ms/step |")
-    print("|---|---|---|---|---|")
+    print(
+        f"| agent | {goal} | steps to it (min / median / max) | final coverage (mean) | agent ms/step "
+        "| steps per decision | agent ms/decision |"
+    )
+    print("|---|---|---|---|---|---|---|")
     for agent in agents:
         mine = [r for r in results if r.agent == agent]
         steps = [s for s in map(_steps_to_goal, mine) if s is not None]
@@ -54,8 +59,14 @@ def main(argv: list[str] | None = None) -> None:
         spread = f"{min(steps)} / {statistics.median(steps):.0f} / {max(steps)}" if steps else "-"
         coverage = statistics.mean(r.final_coverage for r in mine)
         ms = statistics.mean(r.agent_ms_per_step for r in mine)
+        decisions = sum(r.decisions for r in mine)
+        per = sum(r.steps for r in mine) / decisions if decisions else float("nan")
+        ms_decision = (
+            sum(r.agent_ms_per_step * r.steps for r in mine) / decisions if decisions else float("nan")
+        )
         print(
-            f"| {agent} | {share.mean:.0%} [{share.low:.0%}, {share.high:.0%}] | {spread} | {coverage:.3f} | {ms:.2f} |"
+            f"| {agent} | {share.mean:.0%} [{share.low:.0%}, {share.high:.0%}] | {spread} | {coverage:.3f} | {ms:.2f} "
+            f"| {per:.1f} | {ms_decision:.1f} |"
         )
     frontier = [r for r in results if r.agent == "frontier"]
     if frontier:

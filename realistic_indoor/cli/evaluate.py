@@ -34,7 +34,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         "folder) as the fixed building, e.g. OfficeExplore-v0:../shared/data/real_floorplans/office. "
         "A plan that cannot be read is left out with a warning naming it, counted at the end and "
         "listed in results.json (meta.skipped); --strict stops at the first instead. "
-        "Agents: random, wall, frontier, utility, structure, ppo:MODEL.zip.",
+        "Agents: random, wall, frontier, utility, structure, ppo:MODEL.zip, learned (the committed "
+        "learned explorer) or learned:MODEL.zip. Model files are pickles that can run code when "
+        "loaded: use only models you trust.",
     )
     p.add_argument("--agents", required=True, help="comma-separated agent names, e.g. frontier,random")
     p.add_argument(

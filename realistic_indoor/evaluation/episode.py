@@ -29,6 +29,7 @@ SCALARS = (
     "time_to_first_victim_s",
     "time_to_all_victims_s",
     "agent_ms_per_step",
+    "decisions",
 )
 """The per-episode numbers (``NaN`` where they do not apply), in the order outputs list them."""
 
@@ -61,6 +62,9 @@ class EpisodeResult:
         time_to_all_victims_s: Time the last one was (s); ``NaN`` unless all were.
         victim_times_s: Time each found victim was found, in order (s).
         agent_ms_per_step: The agent's thinking time per step (ms, wall clock).
+        decisions: Goals the agent chose (the map-based and learned explorers' plans; 0 for
+            agents that choose none), so that ``agent_ms_per_step * steps / decisions`` is the
+            time per decision.
         coverage_t: Coverage every ``curve_every_steps`` steps, from the start.
         curve_dt_s: Time between entries of ``coverage_t`` (s).
         coverage_d: Coverage every ``curve_every_m`` metres driven, from the start.
@@ -88,6 +92,7 @@ class EpisodeResult:
     time_to_all_victims_s: float
     victim_times_s: list[float] = field(default_factory=list)
     agent_ms_per_step: float = math.nan
+    decisions: int = 0
     coverage_t: list[float] = field(default_factory=list)
     curve_dt_s: float = 0.0
     coverage_d: list[float] = field(default_factory=list)
@@ -133,7 +138,17 @@ def run_episode(task: EpisodeTask) -> EpisodeResult:
         config = env.unwrapped.config
     finally:
         env.close()
-    return log.result(task, 1.0 / config.robot.control_hz, config.max_steps, thinking)
+    result = log.result(task, 1.0 / config.robot.control_hz, config.max_steps, thinking)
+    result.decisions = _decisions(agent)
+    return result
+
+
+def _decisions(agent: Any) -> int:
+    """Goals an agent chose in its episode: policy calls or plans (0 for an agent with neither)."""
+    if hasattr(agent, "decisions"):
+        return int(agent.decisions)
+    navigator = getattr(agent, "navigator", None)
+    return int(navigator.plans) if navigator is not None else 0
 
 
 class _Log:

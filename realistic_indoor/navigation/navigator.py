@@ -175,6 +175,7 @@ class Navigator:
         finished: Whether the last plan found nothing to go to (exploration is over).
         goal: The goal being driven to (m, odometry frame), or ``None``.
         pose: The pose of the last observation (odometry frame: m, m, rad).
+        plans: Goals chosen (or found missing) this episode: the calls of :meth:`commit`.
     """
 
     def __init__(self, spec: RobotSpec, config: ExplorerConfig | None = None) -> None:
@@ -201,6 +202,7 @@ class Navigator:
         self.goal: tuple[float, float] | None = None
         self.pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self._victim: int | None = None
+        self.plans = 0
         self._frontier_goal = True
         self._since_plan = 0
         self._new_cells = 0
@@ -374,6 +376,7 @@ class Navigator:
                 unobserved space; ``False`` for a waypoint, kept until reached (or blocked).
         """
         self._frontier_goal = frontier
+        self.plans += 1
         self._since_plan = 0
         self._new_cells = 0
         self._new_victims = 0

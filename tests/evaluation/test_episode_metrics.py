@@ -21,6 +21,13 @@ def test_run_episode__metrics_agree_with_the_episode(small_office):
     assert r.agent_ms_per_step > 0
     assert r.max_steps == 400
     assert 0 < r.coverage_auc < r.final_coverage
+    # a plan at the start, then one at least every few dozen steps, never one per step
+    assert 1 < r.decisions < r.steps / 3
+
+
+def test_run_episode__agents_that_choose_no_goals_report_no_decisions(small_office):
+    env = EnvSpec("OfficeExplore-v0", kwargs={"building": small_office, "max_steps": 30})
+    assert run_episode(EpisodeTask("random", env, seed=0)).decisions == 0
 
 
 def test_coverage_auc__holds_the_final_coverage_to_the_step_limit():

@@ -16,8 +16,10 @@ robot senses (the observation and the ``info`` dict), never the building::
         obs, reward, terminated, truncated, info = env.step(agent.act(obs, info))
         done = terminated or truncated
 
-Names (:data:`AGENTS`): ``random``, ``wall``, ``frontier``, ``utility``, ``structure`` and
-``ppo:<model.zip>`` (a trained stable-baselines3 model). See ``docs/agents.md``.
+Names (:data:`AGENTS`): ``random``, ``wall``, ``frontier``, ``utility``, ``structure``,
+``ppo:<model.zip>`` (a trained stable-baselines3 model) and ``learned`` (the learned explorer:
+a trained policy choosing among candidate goals; ``learned:<model.zip>`` for another model). See
+``docs/agents.md``.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ __all__ = [
     "Agent",
     "ExplorerConfig",
     "FrontierAgent",
+    "LearnedAgent",
     "PPOAgent",
     "RandomAgent",
     "RobotSpec",
@@ -51,8 +54,10 @@ AGENTS: dict[str, str] = {
     "utility": "realistic_indoor.agents.utility:UtilityFrontierAgent",
     "structure": "realistic_indoor.agents.structure:StructureAgent",
     "ppo": "realistic_indoor.agents.rl.agent:PPOAgent",
+    "learned": "realistic_indoor.agents.rl.learned_agent:LearnedAgent",
 }
-"""Agent names and their ``module:Class``; ``ppo`` needs a model: ``"ppo:path/to/model.zip"``."""
+"""Agent names and their ``module:Class``; ``ppo`` needs a model: ``"ppo:path/to/model.zip"``;
+``learned`` loads the committed learned explorer, ``"learned:path/to/model.zip"`` another."""
 
 _LAZY = {
     "Agent": "realistic_indoor.agents.base",
@@ -66,7 +71,8 @@ def make_agent(name: str, env: Any, **options: Any) -> Agent:
     """The agent called ``name`` for the robot of ``env``.
 
     Args:
-        name: A key of :data:`AGENTS`; ``"ppo:<path>"`` loads the PPO model saved at ``path``.
+        name: A key of :data:`AGENTS`; ``"ppo:<path>"`` loads the PPO model saved at ``path``,
+            ``"learned:<path>"`` a learned explorer's model (``"learned"`` alone: the committed one).
         env: The environment (only its robot's sensors, limits and action space are read), or
             a :class:`~realistic_indoor.agents.base.RobotSpec`.
         **options: Keyword arguments of the agent's class (e.g. ``config=`` of an explorer).
@@ -86,6 +92,12 @@ def make_agent(name: str, env: Any, **options: Any) -> Agent:
             raise ConfigError("the ppo agent needs a trained model: ppo:<path/to/model.zip>")
         if argument:
             options["model"] = argument
+    elif key == "learned":
+        if argument:
+            options["model"] = argument
+        config = getattr(getattr(env, "unwrapped", env), "config", None)
+        if config is not None and hasattr(config, "max_steps"):
+            options.setdefault("max_steps", config.max_steps)
     elif argument:
         raise ConfigError(f"agent {key!r} takes no ':' argument, got {name!r}")
     spec = env if isinstance(env, RobotSpec) else RobotSpec.from_env(env)

@@ -17,7 +17,10 @@ _DESCRIPTION = (
     "Train a PPO explorer (stable-baselines3, MultiInputPolicy on the scan, local map and velocity) "
     "on a mix of building types, save it with its config and training curve (.json beside the "
     ".zip), then evaluate it against the random agent and the frontier explorer on the training "
-    'ids at their default size. Needs the rl extra: pip install "realistic-indoor[rl]".'
+    "ids at their default size. With --preset learned, train the learned explorer instead: a "
+    "policy choosing among candidate goals (frontier macro actions, sb3-contrib MaskablePPO, "
+    "cloned from the structure explorer's rule first), evaluated against the frontier, utility "
+    'and structure explorers. Needs the rl extra: pip install "realistic-indoor[rl]".'
 )
 _EPILOG = """\
 presets (measured on 2 CPU cores):
@@ -27,15 +30,21 @@ presets (measured on 2 CPU cores):
            step limits (140 CPU-seconds: 2 to 6 minutes)
   long     3,000,000 steps on bigger buildings (hours), then 10 episodes per agent and id
            (5 times the default's evaluation)
+  learned  the learned explorer on offices, schools and houses at their default sizes and
+           step limits: 20,000 decisions of cloning, then 40,000 of MaskablePPO (--timesteps
+           sets these), then 2 episodes per agent and id
+  learned-smoke  seconds, on houses: checks the learned explorer's set-up
 
 output:
   By default each run writes a new model under ./runs/ (ppo_ENVS_PRESET.zip, then
-  ppo_ENVS_PRESET_2.zip, ...), so no run replaces another. An existing file given with
+  ppo_ENVS_PRESET_2.zip, ...; learned_ENVS_PRESET.zip for the learned presets), so no run
+  replaces another. An existing file given with
   --out is refused unless --overwrite. The evaluation goes to MODEL_eval/ beside the model.
   All paths are checked before training starts.
 
 examples:
   realistic-indoor train --preset smoke
+  realistic-indoor train --preset learned
   realistic-indoor train --envs realistic
   realistic-indoor train --envs random --out runs/ppo_random.zip --eval-envs RandomExplore-v0,OfficeExplore-v0
   realistic-indoor train --no-train --out runs/ppo_realistic_default.zip --eval-episodes 10"""
@@ -57,11 +66,12 @@ def register(sub: argparse._SubParsersAction) -> None:
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``train`` (shared with ``experiments/train_ppo.py``)."""
     from realistic_indoor.agents.rl.config import PPO_PRESETS, VEC_ENVS
+    from realistic_indoor.agents.rl.learned import LEARNED_PRESETS
 
     p.add_argument(
         "--preset",
         default="default",
-        choices=list(PPO_PRESETS),
+        choices=[*PPO_PRESETS, *LEARNED_PRESETS],
         help="training budget and evaluation (default: default; see below)",
     )
     p.add_argument(
@@ -71,7 +81,10 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "registered ids to train on (default realistic)",
     )
     p.add_argument(
-        "--timesteps", type=int, help="training steps over all environments (default: the preset's)"
+        "--timesteps",
+        type=int,
+        help="training steps over all environments (default: the preset's); for the learned "
+        "presets, MaskablePPO's decisions after cloning",
     )
     p.add_argument("--seed", type=int, default=0, help="seed of the policy and the environments (default 0)")
     p.add_argument(
@@ -113,19 +126,51 @@ def run(args: argparse.Namespace) -> int:
     from realistic_indoor.agents.rl.config import env_ids_of
 
     _check_numbers(args)
-    env_ids = env_ids_of(args.envs)
-    config = _config(args, env_ids)
+    learned = _is_learned(args.preset)
+    env_ids = _learned_ids(args.envs) if learned else env_ids_of(args.envs)
+    config = _learned_config(args, env_ids) if learned else _config(args, env_ids)
     plan = _eval_plan(args)
-    eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs else env_ids
+    eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs else config.env_ids
     model_path = _model_path(args, env_ids)
     eval_dir = _eval_dir(args, model_path) if plan.episodes else None
     if not args.no_train:
-        _train(args, config, model_path)
+        (_train_learned if learned else _train)(args, config, model_path)
     if eval_dir is None:
         print("no evaluation (--eval-episodes 0)")
         return 0
-    _evaluate(args, model_path, eval_ids, plan, eval_dir)
+    _evaluate(args, model_path, eval_ids, plan, eval_dir, "learned" if learned else "ppo")
     return 0
+
+
+def _is_learned(preset: str) -> bool:
+    from realistic_indoor.agents.rl.learned import LEARNED_PRESETS
+
+    return preset in LEARNED_PRESETS
+
+
+def _learned_ids(envs: str) -> tuple[str, ...]:
+    """The training ids of a learned preset: ``realistic`` (offices, schools, houses), ``random``, or ids."""
+    from realistic_indoor.agents.rl.config import env_ids_of
+    from realistic_indoor.agents.rl.learned import LEARNED_IDS
+
+    return LEARNED_IDS if envs == "realistic" else env_ids_of(envs)
+
+
+def _learned_config(args: argparse.Namespace, env_ids: tuple[str, ...]):
+    from realistic_indoor.agents.rl.learned import LEARNED_PRESETS, learned_preset
+
+    if args.vec_env is not None:
+        raise ConfigError(
+            "--vec-env is not used by the learned presets (they run sub-processes); leave it out"
+        )
+    changes: dict = {"seed": args.seed}
+    if args.envs != "realistic" or "env_ids" not in LEARNED_PRESETS[args.preset]:
+        changes["env_ids"] = env_ids
+    if args.timesteps is not None:
+        changes["ppo_decisions"] = args.timesteps
+    if args.n_envs is not None:
+        changes["n_envs"] = args.n_envs
+    return learned_preset(args.preset, **changes)
 
 
 def _check_numbers(args: argparse.Namespace) -> None:
@@ -182,13 +227,15 @@ def envs_label(envs: str, env_ids: tuple[str, ...]) -> str:
 def default_model_path(label: str, preset: str, folder: Path = RUNS_DIR, new: bool = True) -> Path:
     """``folder/ppo_LABEL_PRESET.zip``, or with ``new`` the first of ``_2``, ``_3``, ... not taken.
 
+    The learned presets' models are ``learned_LABEL_PRESET.zip`` (``learned_realistic_learned.zip``).
+
     Args:
         label: The training environments' label (:func:`envs_label`).
         preset: The preset's name.
         folder: The runs folder.
         new: Skip names whose model or evaluation folder exists.
     """
-    stem = f"ppo_{label}_{preset}"
+    stem = f"{'learned' if _is_learned(preset) else 'ppo'}_{label}_{preset}"
     path, n = folder / f"{stem}.zip", 1
     while new and (path.exists() or path.with_suffix(".json").exists() or _eval_dir_of(path).exists()):
         n += 1
@@ -250,17 +297,33 @@ def _train(args: argparse.Namespace, config, model_path: Path) -> None:
     )
 
 
-def _evaluate(args: argparse.Namespace, model_path: Path, eval_ids, plan, eval_dir: Path) -> None:
+def _train_learned(args: argparse.Namespace, config, model_path: Path) -> None:
+    from realistic_indoor.agents.rl.learned import require_learned, train_learned
+
+    require_learned()
+    print(
+        f"training the learned explorer ({args.preset} preset, seed {config.seed}) on {', '.join(config.env_ids)}: "
+        f"{config.bc_decisions:,} decisions of cloning, then {config.ppo_decisions:,} of MaskablePPO; "
+        f"model to {model_path}",
+        flush=True,
+    )
+    log = (lambda line: None) if args.quiet else (lambda line: print(line, flush=True))
+    train_learned(config, model_path, log=log)
+
+
+def _evaluate(
+    args: argparse.Namespace, model_path: Path, eval_ids, plan, eval_dir: Path, kind: str = "ppo"
+) -> None:
     from realistic_indoor.evaluation.ppo import evaluate_ppo, format_evaluation
 
-    agents = ", ".join(("ppo", *plan.baselines))
+    agents = ", ".join((kind, *plan.baselines))
     print(
         f"evaluating {agents} on {plan.describe()} on {', '.join(eval_ids)} "
         "(--eval-episodes to change, 0 to skip)",
         flush=True,
     )
     results = evaluate_ppo(
-        model_path, eval_ids, plan, eval_dir, workers=args.workers, progress=not args.quiet
+        model_path, eval_ids, plan, eval_dir, workers=args.workers, progress=not args.quiet, kind=kind
     )
     print(format_evaluation(results))
     print(f"evaluation in {eval_dir}/")

@@ -24,8 +24,9 @@ def evaluate_ppo(
     out_dir: str | Path | None = None,
     workers: int | None = None,
     progress: bool = True,
+    kind: str = "ppo",
 ) -> list[Any]:
-    """Run the PPO model and ``plan.baselines`` on ``env_ids`` for ``plan.episodes`` seeds each.
+    """Run the trained model and ``plan.baselines`` on ``env_ids`` for ``plan.episodes`` seeds each.
 
     The environments are the registered ids with ``plan``'s step limit and floor areas where it
     sets them (else the ids' own: default-size buildings); every agent gets the same seeds, hence
@@ -39,6 +40,8 @@ def evaluate_ppo(
             figures; ``None`` writes nothing.
         workers: Parallel processes (``None``: one per core).
         progress: Show a progress bar.
+        kind: The agent that runs the model: ``"ppo"`` (a primitive-action policy) or
+            ``"learned"`` (the learned explorer, choosing goals).
 
     Returns:
         The :class:`~realistic_indoor.evaluation.EpisodeResult` of every episode.
@@ -49,7 +52,7 @@ def evaluate_ppo(
     from realistic_indoor.evaluation import evaluate
 
     return evaluate(
-        [f"ppo:{model_path}", *plan.baselines],
+        [f"{kind}:{model_path}", *plan.baselines],
         [_env_spec(env_id, plan) for env_id in env_ids],
         episodes=plan.episodes,
         seed=plan.seed,

@@ -211,11 +211,17 @@ PPO_EVAL_PRESETS: dict[str, EvalPlan] = {
     "default": EvalPlan(episodes=2),
     "long": EvalPlan(episodes=10),
     "smoke": EvalPlan(episodes=1, max_steps=50, areas_m2=TRAINING_AREAS_M2),
+    "learned": EvalPlan(episodes=2, baselines=("frontier", "utility", "structure")),
+    "learned-smoke": EvalPlan(
+        episodes=1, max_steps=50, areas_m2=TRAINING_AREAS_M2, baselines=("frontier", "structure")
+    ),
 }
 """The evaluation after each preset's training, on default-size buildings at the ids' step limits:
 ``default`` 2 episodes per agent and id (140 CPU-seconds: 2 to 6 minutes on 2 cores), ``long`` 10;
 ``smoke`` 1 episode of 50 steps on training-size buildings (seconds: it checks that the model
-loads and acts, not how well)."""
+loads and acts, not how well); ``learned`` and ``learned-smoke`` (the learned explorer's presets,
+:data:`~realistic_indoor.agents.rl.learned.LEARNED_PRESETS`) against the frontier, utility and
+structure explorers."""
 
 
 def env_ids_of(envs: str, option: str = "--envs") -> tuple[str, ...]:

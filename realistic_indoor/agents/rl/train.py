@@ -13,7 +13,20 @@ from realistic_indoor.agents.rl.config import PPOConfig
 from realistic_indoor.agents.rl.envs import make_vec_env
 from realistic_indoor.files import atomic_path, write_text
 
-__all__ = ["TrainResult", "require_rl", "train_ppo"]
+__all__ = ["PPO_ARGUMENTS", "TrainResult", "ppo_arguments", "require_rl", "train_ppo"]
+
+PPO_ARGUMENTS = (
+    "n_steps",
+    "batch_size",
+    "n_epochs",
+    "learning_rate",
+    "gamma",
+    "gae_lambda",
+    "ent_coef",
+    "clip_range",
+    "seed",
+)
+"""The fields of a training config that are stable-baselines3 PPO's (and MaskablePPO's) own arguments."""
 
 
 @dataclass(frozen=True)
@@ -67,21 +80,7 @@ def train_ppo(
     out_path.parent.mkdir(parents=True, exist_ok=True)
     venv = make_vec_env(config)
     tracker = _progress_callback(config.total_timesteps, log, progress, log_every)
-    model = sb3.PPO(
-        "MultiInputPolicy",
-        venv,
-        n_steps=config.n_steps,
-        batch_size=config.batch_size,
-        n_epochs=config.n_epochs,
-        learning_rate=config.learning_rate,
-        gamma=config.gamma,
-        gae_lambda=config.gae_lambda,
-        ent_coef=config.ent_coef,
-        clip_range=config.clip_range,
-        seed=config.seed,
-        device="cpu",
-        verbose=0,
-    )
+    model = sb3.PPO("MultiInputPolicy", venv, **ppo_arguments(config))
     start = time.perf_counter()
     try:
         model.learn(total_timesteps=config.total_timesteps, callback=tracker)
@@ -104,6 +103,16 @@ def train_ppo(
     }
     write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
     return result
+
+
+def ppo_arguments(config: Any) -> dict[str, Any]:
+    """The keyword arguments of ``PPO`` (or ``MaskablePPO``) from a training config's fields.
+
+    Args:
+        config: A :class:`~realistic_indoor.agents.rl.config.PPOConfig` or
+            :class:`~realistic_indoor.agents.rl.learned.LearnedConfig`.
+    """
+    return {**{name: getattr(config, name) for name in PPO_ARGUMENTS}, "device": "cpu", "verbose": 0}
 
 
 def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_every: int) -> Any:

@@ -1,0 +1,419 @@
+"""The learned explorer's training recipe: choose among candidate goals with sb3-contrib's ``MaskablePPO``.
+
+The environments run with frontier macro actions (``action_type="frontier"``): the policy picks
+one of K candidate goals where the classical explorers would choose a goal, and their navigator
+drives there. The reward is the metric (``coverage_auc``, scaled by :attr:`LearnedConfig.reward_scale`):
+an episode's return is its coverage AUC minus the coverage at reset. Training runs at the
+evaluation's sizes and step limits (the generators' default areas, the ids' own limits).
+
+The recipe, :func:`train_learned`:
+
+1. **Behaviour cloning** from the structure-aware explorer's rule, which the candidates'
+   features express exactly (:func:`expert_choice`: the smallest path cost, a frontier in a room
+   counting 4 times its cost; a detected victim first): decisions are collected with that rule
+   choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to its choices
+   (cross-entropy) and the critic to the discounted returns that followed.
+2. **MaskablePPO** from there, for the rest of the budget.
+
+The log reports decisions/s, primitive steps/s and the share of time collecting against
+learning; the model (``.zip``) gets a ``.json`` beside it with the config, the figures and the
+CPU it ran on.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.checks import require_int, require_positive, require_range
+from realistic_indoor.errors import ConfigError
+from realistic_indoor.files import atomic_path, write_text
+from realistic_indoor.machine import describe_machine
+
+__all__ = [
+    "LEARNED_IDS",
+    "LEARNED_PRESETS",
+    "LearnedConfig",
+    "expert_choice",
+    "learned_preset",
+    "make_learned_env",
+    "train_learned",
+]
+
+LEARNED_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
+"""The ids the learned explorer trains on by default (their default sizes and step limits)."""
+
+_ROOM_FACTOR = 4.0
+"""The structure explorer's weight on a frontier in a room (``StructureConfig.room_factor``)."""
+
+
+@dataclass(frozen=True)
+class LearnedConfig:
+    """A learned-explorer training run.
+
+    Attributes:
+        env_ids: Registered ids trained on, in turn (their default buildings and step limits).
+        n_candidates: Candidate goals per decision (K).
+        n_envs: Environments run in parallel (sub-processes when more than one).
+        bc_decisions: Decisions of the expert rule collected for behaviour cloning (0: none).
+        bc_epochs: Passes of behaviour cloning over them.
+        ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
+        seed: Seed of the policy and of the environments' episodes (``seed + i`` for the
+            ``i``-th environment; cloning and PPO take separate blocks of seeds from it).
+        reward_scale: Weight of the ``coverage_auc`` reward (the return is this times the
+            coverage AUC minus the coverage at reset).
+        n_steps: Decisions per environment per PPO rollout.
+        batch_size: Minibatch size (cloning and PPO).
+        n_epochs: PPO passes over each rollout.
+        learning_rate: Adam step size of PPO.
+        bc_learning_rate: Adam step size of cloning.
+        gamma: Discount per decision.
+        gae_lambda: GAE parameter.
+        ent_coef: Entropy bonus.
+        clip_range: PPO clipping.
+        torch_threads: Threads torch may use in the training process.
+    """
+
+    env_ids: tuple[str, ...] = LEARNED_IDS
+    n_candidates: int = 16
+    n_envs: int = 2
+    bc_decisions: int = 20_000
+    bc_epochs: int = 30
+    ppo_decisions: int = 40_000
+    seed: int = 0
+    reward_scale: float = 100.0
+    n_steps: int = 512
+    batch_size: int = 256
+    n_epochs: int = 4
+    learning_rate: float = 1e-4
+    bc_learning_rate: float = 1e-3
+    gamma: float = 0.995
+    gae_lambda: float = 0.95
+    ent_coef: float = 0.001
+    clip_range: float = 0.1
+    torch_threads: int = 1
+
+    def __post_init__(self) -> None:
+        from realistic_indoor.envs import PRESETS
+
+        unknown = [e for e in self.env_ids if e not in PRESETS]
+        if not self.env_ids or unknown:
+            raise ConfigError(
+                f"LearnedConfig.env_ids: unknown ids {unknown}; registered: {', '.join(PRESETS)}"
+            )
+        for name in (
+            "n_candidates",
+            "n_envs",
+            "bc_epochs",
+            "n_steps",
+            "batch_size",
+            "n_epochs",
+            "torch_threads",
+        ):
+            require_int("LearnedConfig", name, getattr(self, name), 1)
+        for name in ("bc_decisions", "ppo_decisions", "seed"):
+            require_int("LearnedConfig", name, getattr(self, name), 0)
+        for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):
+            require_positive("LearnedConfig", name, getattr(self, name), "")
+        require_positive("LearnedConfig", "ent_coef", self.ent_coef, "", allow_zero=True)
+        require_range("LearnedConfig", "gamma", self.gamma, 0.0, 1.0, "")
+        require_range("LearnedConfig", "gae_lambda", self.gae_lambda, 0.0, 1.0, "")
+        object.__setattr__(self, "env_ids", tuple(self.env_ids))
+
+    def replace(self, **changes: Any) -> LearnedConfig:
+        """A copy with some fields changed (checked again)."""
+        return replace(self, **changes)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain values (for the JSON saved next to a model)."""
+        return {**asdict(self), "env_ids": list(self.env_ids)}
+
+
+LEARNED_PRESETS: dict[str, dict[str, Any]] = {
+    "learned": {},
+    "learned-smoke": {
+        "bc_decisions": 64,
+        "bc_epochs": 1,
+        "ppo_decisions": 64,
+        "n_steps": 32,
+        "batch_size": 32,
+        "n_epochs": 1,
+        "n_envs": 1,
+        "env_ids": ("HouseExplore-v0",),
+    },
+}
+"""Named overrides of :class:`LearnedConfig`: ``learned`` (the recipe: 20,000 cloned decisions,
+then 40,000 of MaskablePPO), ``learned-smoke`` (seconds, on houses: checks the set-up)."""
+
+
+def learned_preset(name: str, **changes: Any) -> LearnedConfig:
+    """The config of a preset of :data:`LEARNED_PRESETS`, with ``changes`` on top.
+
+    Raises:
+        ConfigError: For an unknown preset or an invalid change.
+    """
+    if name not in LEARNED_PRESETS:
+        raise ConfigError(f"unknown learned preset {name!r}; presets: {', '.join(LEARNED_PRESETS)}")
+    return LearnedConfig(**{**LEARNED_PRESETS[name], **changes})
+
+
+def expert_choice(candidates: np.ndarray, mask: np.ndarray) -> int:
+    """The structure explorer's rule on a decision's candidates: the action it would take.
+
+    A detected victim (always candidate 0 when there is one) first; otherwise the candidate with
+    the smallest path cost, a frontier off the corridors and halls counting ``4`` times its cost
+    (``StructureConfig.room_factor``), ties to the nearer. Among the K candidates only: a goal of
+    the structure explorer farther than the K-th nearest frontier is not offered.
+
+    Args:
+        candidates: The ``candidates`` observation (flat, ``K * F``).
+        mask: ``(K,)`` bool, the candidates that exist.
+    """
+    from realistic_indoor.envs.macro import CANDIDATE_FEATURES
+
+    rows = np.asarray(candidates, dtype=float).reshape(len(mask), len(CANDIDATE_FEATURES))
+    if rows[0, CANDIDATE_FEATURES.index("victim")] > 0.5:
+        return 0
+    cost = rows[:, CANDIDATE_FEATURES.index("path_cost")]
+    factor = np.where(rows[:, CANDIDATE_FEATURES.index("in_room")] > 0.5, _ROOM_FACTOR, 1.0)
+    return int(np.argmin(np.where(mask, cost * factor, np.inf)))
+
+
+class LearnedEnvFactory:
+    """Builds one training environment (picklable, for sub-process vector environments).
+
+    Args:
+        env_id: The registered id.
+        config: The training run.
+    """
+
+    def __init__(self, env_id: str, config: LearnedConfig) -> None:
+        self.env_id = env_id
+        self.n_candidates = config.n_candidates
+        self.reward_scale = config.reward_scale
+
+    def __call__(self) -> Any:
+        """A new macro environment with the metric's reward, filtered keys, a Monitor."""
+        from stable_baselines3.common.monitor import Monitor
+
+        return Monitor(
+            make_learned_env(self.env_id, self.n_candidates, self.reward_scale), info_keywords=("coverage",)
+        )
+
+
+def make_learned_env(env_id: str, n_candidates: int = 16, reward_scale: float = 1.0, **kwargs: Any) -> Any:
+    """``env_id`` with frontier macro actions, the metric as reward, and the policy's keys only.
+
+    Args:
+        env_id: A registered id.
+        n_candidates: K.
+        reward_scale: Weight of the ``coverage_auc`` reward (every other term 0).
+        **kwargs: More ``gym.make`` keywords (``area_m2``, ``max_steps``, ...).
+    """
+    import gymnasium as gym
+    from gymnasium.wrappers import FilterObservation
+
+    import realistic_indoor.envs  # noqa: F401 - registers the ids
+    from realistic_indoor.agents.rl.scorer import OBS_KEYS
+
+    rewards = {"new_area": 0.0, "collision": 0.0, "time": 0.0, "victim": 0.0, "coverage_auc": reward_scale}
+    env = gym.make(
+        env_id, action_type="frontier", macro={"n_candidates": n_candidates}, rewards=rewards, **kwargs
+    )
+    return FilterObservation(env, list(OBS_KEYS))
+
+
+def train_learned(
+    config: LearnedConfig, out_path: str | Path, log: Callable[[str], object] = print
+) -> dict[str, Any]:
+    """Train the learned explorer (cloning, then MaskablePPO) and save it to ``out_path`` (``.zip``).
+
+    The model and its ``.json`` (config, decisions, primitive steps, seconds, decisions/s,
+    primitive steps/s, the share of time collecting, the machine) are written whole or not at all.
+
+    Returns:
+        The ``.json``'s content.
+
+    Raises:
+        ConfigError: If sb3-contrib, stable-baselines3 or torch are missing.
+    """
+    torch, sb3_contrib = require_learned()
+    torch.set_num_threads(config.torch_threads)
+    torch.manual_seed(config.seed)
+    from realistic_indoor.agents.rl.scorer import CandidatePolicy
+    from realistic_indoor.agents.rl.train import ppo_arguments
+
+    out_path = Path(out_path).with_suffix(".zip")
+    start = time.perf_counter()
+    venv = _vec_env(config, config.seed)
+    meter = _Meter()
+    try:
+        model = sb3_contrib.MaskablePPO(CandidatePolicy, venv, **ppo_arguments(config))
+        bc = _clone(model, venv, config, meter, log) if config.bc_decisions else {}
+        if config.ppo_decisions:
+            callback = _ppo_callback(meter, log, start)
+            model.learn(total_timesteps=config.ppo_decisions, callback=callback, reset_num_timesteps=False)
+    finally:
+        venv.close()
+    seconds = time.perf_counter() - start
+    with atomic_path(out_path) as tmp:
+        model.save(tmp)
+    meta = {
+        "config": config.to_dict(),
+        "seconds": round(seconds, 1),
+        "machine": describe_machine(load=False),
+        "behaviour_cloning": bc,
+        **meter.summary(seconds),
+    }
+    write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
+    log(
+        f"saved {out_path} after {seconds:.0f} s: {meter.decisions:,} decisions, {meter.steps:,} primitive "
+        f"steps ({meta['decisions_per_s']:.1f} decisions/s, {meta['steps_per_s']:.0f} primitive steps/s "
+        f"collecting; collecting {meta['collect_share']:.0%} of the time)"
+    )
+    return meta
+
+
+def require_learned() -> tuple[Any, Any]:
+    """The modules ``torch`` and ``sb3_contrib``, or a ConfigError naming the install."""
+    try:
+        import sb3_contrib
+        import torch
+    except ImportError as e:
+        raise ConfigError(
+            f'the learned explorer needs sb3-contrib and torch ({e.name} is missing): pip install "realistic-indoor[rl]"'
+        ) from None
+    return torch, sb3_contrib
+
+
+class _Meter:
+    """Decisions, primitive steps, episodes and time spent collecting."""
+
+    def __init__(self) -> None:
+        self.decisions = 0
+        self.steps = 0
+        self.collecting = 0.0
+        self.coverages: list[float] = []
+
+    def add(self, infos: list[dict[str, Any]]) -> None:
+        self.decisions += len(infos)
+        self.steps += sum(int(i.get("primitive_steps", 0)) for i in infos)
+        self.coverages.extend(float(i["coverage"]) for i in infos if "episode" in i)
+
+    def summary(self, seconds: float) -> dict[str, Any]:
+        recent = self.coverages[-50:]
+        return {
+            "decisions": self.decisions,
+            "primitive_steps": self.steps,
+            "episodes": len(self.coverages),
+            "last_coverage": round(sum(recent) / len(recent), 4) if recent else math.nan,
+            "collect_seconds": round(self.collecting, 1),
+            "decisions_per_s": round(self.decisions / max(self.collecting, 1e-9), 2),
+            "steps_per_s": round(self.steps / max(self.collecting, 1e-9), 1),
+            "collect_share": round(self.collecting / max(seconds, 1e-9), 3),
+        }
+
+
+def _vec_env(config: LearnedConfig, seed: int) -> Any:
+    from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
+
+    factories = [
+        LearnedEnvFactory(config.env_ids[i % len(config.env_ids)], config) for i in range(config.n_envs)
+    ]
+    venv = SubprocVecEnv(factories, start_method="fork") if config.n_envs > 1 else DummyVecEnv(factories)
+    venv.seed(seed)
+    return venv
+
+
+def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Callable[[str], object]) -> dict:
+    """Collect the expert rule's decisions, fit the policy to them and the critic to their returns."""
+    import torch
+    from sb3_contrib.common.maskable.utils import get_action_masks
+
+    obs = venv.reset()
+    n_env = venv.num_envs
+    store: dict[str, list[np.ndarray]] = {k: [] for k in obs}
+    actions, masks, rewards, dones = [], [], [], []
+    t0 = time.perf_counter()
+    while len(actions) * n_env < config.bc_decisions:
+        mask = get_action_masks(venv)
+        act = np.array([expert_choice(obs["candidates"][i], mask[i]) for i in range(n_env)])
+        for k in obs:
+            store[k].append(obs[k].copy())
+        actions.append(act)
+        masks.append(mask)
+        obs, reward, done, infos = venv.step(act)
+        rewards.append(reward)
+        dones.append(done)
+        meter.add(infos)
+    meter.collecting += time.perf_counter() - t0
+    returns = _discounted(np.array(rewards), np.array(dones), config.gamma)
+    data = {k: torch.as_tensor(np.concatenate(v)) for k, v in store.items()}
+    act_t = torch.as_tensor(np.concatenate(actions))
+    mask_t = np.concatenate(masks)
+    ret_t = torch.as_tensor(returns.reshape(-1), dtype=torch.float32)
+    policy = model.policy
+    optimizer = torch.optim.Adam(policy.parameters(), lr=config.bc_learning_rate)
+    n = len(act_t)
+    rng = np.random.default_rng(config.seed)
+    for epoch in range(config.bc_epochs):
+        order = rng.permutation(n)
+        total, agree = 0.0, 0
+        for lo in range(0, n, config.batch_size):
+            idx = order[lo : lo + config.batch_size]
+            batch = {k: v[idx] for k, v in data.items()}
+            values, log_prob, _ = policy.evaluate_actions(batch, act_t[idx], action_masks=mask_t[idx])
+            loss = -log_prob.mean() + 0.5 * torch.nn.functional.mse_loss(values.flatten(), ret_t[idx])
+            optimizer.zero_grad()
+            loss.backward()
+            optimizer.step()
+            total += float(loss.detach()) * len(idx)
+        with torch.no_grad():
+            chosen, _, _ = policy.forward(data, deterministic=True, action_masks=mask_t)
+            agree = float((chosen == act_t).float().mean())
+        log(
+            f"cloning epoch {epoch + 1}/{config.bc_epochs}: loss {total / n:.4f}, agrees with the rule on {agree:.1%}"
+        )
+    return {"decisions": int(n), "seconds": round(time.perf_counter() - t0, 1), "agreement": round(agree, 4)}
+
+
+def _discounted(rewards: np.ndarray, dones: np.ndarray, gamma: float) -> np.ndarray:
+    """Discounted returns per ``(time, env)``, restarting after each episode end (no bootstrap)."""
+    out = np.zeros_like(rewards, dtype=float)
+    running = np.zeros(rewards.shape[1])
+    for t in range(len(rewards) - 1, -1, -1):
+        running = rewards[t] + gamma * running * (1.0 - dones[t])
+        out[t] = running
+    return out
+
+
+def _ppo_callback(meter: _Meter, log: Callable[[str], object], start: float) -> Any:
+    from stable_baselines3.common.callbacks import BaseCallback
+
+    class Progress(BaseCallback):
+        """Counts decisions and primitive steps; a log line per rollout."""
+
+        def _on_rollout_start(self) -> None:
+            self._t0 = time.perf_counter()
+
+        def _on_rollout_end(self) -> None:
+            meter.collecting += time.perf_counter() - self._t0
+            s = meter.summary(time.perf_counter() - start)
+            log(
+                f"PPO {self.num_timesteps:>7} decisions  {time.perf_counter() - start:6.0f} s  "
+                f"{s['episodes']} episodes  coverage (last 50) {s['last_coverage']}  "
+                f"{s['decisions_per_s']} decisions/s  {s['steps_per_s']} steps/s  collect {s['collect_share']:.0%}"
+            )
+
+        def _on_step(self) -> bool:
+            meter.add(self.locals["infos"])
+            return True
+
+    return Progress()

@@ -1,0 +1,170 @@
+"""The learned explorer: its expert rule, its agent loop, its model files and its training command.
+
+Expected values are worked out by hand (the expert rule on hand-made candidates) or come from
+the classical explorer (a policy that always chooses candidate 0 is the nearest-frontier
+explorer, whichever side of the environment runs the macro actions).
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+from realistic_indoor.agents import make_agent
+from realistic_indoor.agents.rl.learned import expert_choice
+from realistic_indoor.envs.macro import CANDIDATE_FEATURES
+from realistic_indoor.errors import ConfigError
+
+F = len(CANDIDATE_FEATURES)
+
+
+def _rows(*candidates: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Flat candidates of K = 4 from dicts of features, and their mask."""
+    rows = np.zeros((4, F), dtype=np.float32)
+    for i, features in enumerate(candidates):
+        rows[i, 0] = 1.0
+        for name, value in features.items():
+            rows[i, CANDIDATE_FEATURES.index(name)] = value
+    return rows.ravel(), rows[:, 0] == 1.0
+
+
+def test_expert__prefers_the_circulation_unless_a_room_is_four_times_nearer():
+    # costs 1.0 (room), 3.0 (corridor), 3.5 (corridor): weighted 4.0, 3.0, 3.5 -> the corridor at 3.0
+    flat, mask = _rows({"path_cost": 0.1, "in_room": 1}, {"path_cost": 0.3}, {"path_cost": 0.35})
+    assert expert_choice(flat, mask) == 1
+    # a room at 0.7 m (weighted 2.8) beats a corridor at 3.0 m
+    flat, mask = _rows({"path_cost": 0.07, "in_room": 1}, {"path_cost": 0.3})
+    assert expert_choice(flat, mask) == 0
+    # every candidate in a room: the nearest
+    flat, mask = _rows({"path_cost": 0.2, "in_room": 1}, {"path_cost": 0.5, "in_room": 1})
+    assert expert_choice(flat, mask) == 0
+
+
+def test_expert__goes_to_a_detected_victim_first_and_never_to_a_missing_candidate():
+    flat, mask = _rows({"path_cost": 0.9, "victim": 1}, {"path_cost": 0.1})
+    assert expert_choice(flat, mask) == 0
+    flat, mask = _rows({"path_cost": 0.5, "in_room": 1}, {"path_cost": 0.4, "in_room": 1})
+    assert expert_choice(flat, mask) == 1  # rows 2 and 3 are zeros (cost 0) but do not exist
+
+
+class _Always:
+    """A stand-in model: always chooses ``choice`` among 16 candidates."""
+
+    def __init__(self, choice: int = 0) -> None:
+        self.action_space = gym.spaces.Discrete(16)
+        self.choice = choice
+        self.seen: list[dict] = []
+
+    def predict(self, obs, action_masks=None, deterministic=True):
+        self.seen.append({"obs": obs, "mask": action_masks})
+        return np.int64(self.choice), None
+
+
+@pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
+def test_learned_agent__choosing_0_drives_as_the_nearest_frontier_explorer(env_id):
+    kwargs = {"area_m2": 600.0} if env_id.startswith("Office") else {}
+    runs = {}
+    for name in ("frontier", "learned"):
+        env = gym.make(env_id, **kwargs)
+        options = {"model": _Always()} if name == "learned" else {}
+        agent = make_agent(name, env, **options)
+        obs, info = env.reset(seed=5)
+        agent.reset()
+        actions = []
+        for _ in range(300):
+            action = agent.act(obs, info)
+            actions.append(np.asarray(action).copy())
+            obs, _, terminated, truncated, info = env.step(action)
+            if terminated or truncated:
+                break
+        runs[name] = actions
+    assert len(runs["frontier"]) == len(runs["learned"])
+    assert all(np.array_equal(a, b) for a, b in zip(runs["frontier"], runs["learned"], strict=True))
+
+
+def test_learned_agent__shows_the_policy_what_the_macro_environment_shows():
+    """The agent's policy sees, decision by decision, the macro environment's observation."""
+    model = _Always()
+    env = gym.make("OfficeExplore-v0", area_m2=600.0, max_steps=400)
+    agent = make_agent("learned", env, model=model)
+    assert agent.max_steps == 400  # read from the environment
+    obs, info = env.reset(seed=2)
+    for _ in range(400):
+        obs, _, terminated, truncated, info = env.step(agent.act(obs, info))
+        if terminated or truncated:
+            break
+    macro = gym.make("OfficeExplore-v0", area_m2=600.0, max_steps=400, action_type="frontier")
+    obs, _ = macro.reset(seed=2)
+    want = []
+    while True:
+        want.append({"candidates": obs["candidates"], "time_left": obs["time_left"]})
+        obs, _, terminated, truncated, _ = macro.step(0)
+        if terminated or truncated:
+            break
+    assert len(model.seen) == len(want) - 1 or len(model.seen) == len(want)
+    for seen, expected in zip(model.seen, want, strict=False):
+        assert np.array_equal(seen["obs"]["candidates"], expected["candidates"])
+        assert np.array_equal(seen["obs"]["time_left"], expected["time_left"])
+
+
+def test_learned_models__a_missing_or_foreign_file_is_a_one_line_error(tmp_path):
+    env = gym.make("HouseExplore-v0")
+    with pytest.raises(ConfigError, match="not found") as error:
+        make_agent(f"learned:{tmp_path / 'missing.zip'}", env)
+    assert "\n" not in str(error.value)
+    text = tmp_path / "notes.zip"
+    text.write_text("not a model")
+    with pytest.raises(ConfigError, match="not a model archive"):
+        make_agent(f"learned:{text}", env)
+
+
+def test_committed_model__explores_a_house():
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    env = gym.make("HouseExplore-v0")
+    agent = make_agent("learned", env)
+    obs, info = env.reset(seed=1000)
+    agent.reset()
+    for _ in range(300):
+        obs, _, terminated, truncated, info = env.step(agent.act(obs, info))
+        if terminated or truncated:
+            break
+    assert info["coverage"] > 0.5
+    assert agent.decisions > 3
+
+
+@pytest.mark.slow
+def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path):
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    out = tmp_path / "m.zip"
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "realistic_indoor.cli",
+            "train",
+            "--preset",
+            "learned-smoke",
+            "--out",
+            str(out),
+            "--eval-episodes",
+            "0",
+            "--quiet",
+        ],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    meta = json.loads(out.with_suffix(".json").read_text())
+    assert meta["decisions"] >= 128 and meta["primitive_steps"] > meta["decisions"]
+    assert meta["behaviour_cloning"]["decisions"] >= 64
+    for key in ("decisions_per_s", "steps_per_s", "collect_share", "machine", "seconds"):
+        assert key in meta
+    agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))
+    assert agent.model.action_space.n == 16

@@ -168,3 +168,20 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
         assert key in meta
     agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))
     assert agent.model.action_space.n == 16
+
+
+@pytest.mark.slow
+def test_training__the_same_seed_gives_the_same_model(tmp_path):
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    import torch
+
+    from realistic_indoor.agents.rl.learned import learned_preset, train_learned
+    from realistic_indoor.agents.rl.learned_agent import load_learned_model
+
+    config = learned_preset("learned-smoke", n_envs=2)  # two sub-processes, as the full recipe
+    metas = [train_learned(config, tmp_path / f"m{i}.zip", log=lambda line: None) for i in range(2)]
+    assert metas[0]["decisions"] == metas[1]["decisions"]
+    assert metas[0]["primitive_steps"] == metas[1]["primitive_steps"]
+    a, b = (load_learned_model(tmp_path / f"m{i}.zip").policy.state_dict() for i in range(2))
+    assert a.keys() == b.keys()
+    assert all(torch.equal(a[k], b[k]) for k in a)

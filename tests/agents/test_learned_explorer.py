@@ -123,6 +123,18 @@ def test_learned_models__a_missing_or_foreign_file_is_a_one_line_error(tmp_path)
         make_agent(f"learned:{text}", env)
 
 
+def test_learned_models__an_archive_of_something_else_is_a_one_line_error(tmp_path):
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    import zipfile
+
+    env = gym.make("HouseExplore-v0")
+    with zipfile.ZipFile(tmp_path / "other.zip", "w") as archive:
+        archive.writestr("notes.txt", "an archive, but not of a model")
+    with pytest.raises(ConfigError, match="not a MaskablePPO model") as error:
+        make_agent(f"learned:{tmp_path / 'other.zip'}", env)
+    assert "\n" not in str(error.value)
+
+
 def test_committed_model__explores_a_house():
     pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
     env = gym.make("HouseExplore-v0")

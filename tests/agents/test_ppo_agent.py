@@ -66,8 +66,14 @@ def test_ppo_agent__clear_errors(model_path, hall_office, tmp_path):
         make_agent(f"ppo:{tmp_path / 'none.zip'}", env)
     corrupt = tmp_path / "corrupt.zip"
     corrupt.write_bytes(b"PK\x03\x04 not a model")
-    with pytest.raises(ConfigError, match="not a stable-baselines3 PPO model"):
+    with pytest.raises(ConfigError, match="is not a model archive"):
         make_agent(f"ppo:{corrupt}", env)
+    import zipfile
+
+    with zipfile.ZipFile(tmp_path / "other.zip", "w") as archive:
+        archive.writestr("notes.txt", "an archive, but not of a model")
+    with pytest.raises(ConfigError, match="not a stable-baselines3 PPO model"):
+        make_agent(f"ppo:{tmp_path / 'other.zip'}", env)
 
 
 def test_ppo_config__rejects_bad_values():

@@ -19,6 +19,8 @@ _MODELS: dict[str, Any] = {}
 def load_model(path: str | Path) -> Any:
     """A saved stable-baselines3 PPO model, loaded once per process (CPU, one torch thread).
 
+    Model files are pickles: loading one can run code. Load only models you trust.
+
     Raises:
         ConfigError: If the file is missing or stable-baselines3 / torch are not installed.
     """
@@ -28,11 +30,13 @@ def load_model(path: str | Path) -> Any:
     if key not in _MODELS:
         if not Path(path).is_file():
             raise ConfigError(f"PPO model {str(path)!r} not found (train one with: realistic-indoor train)")
+        if not zipfile.is_zipfile(path):
+            raise ConfigError(f"{str(path)!r} is not a model archive (a .zip saved by stable-baselines3)")
         torch, sb3 = require_rl()
         torch.set_num_threads(1)
         try:
             _MODELS[key] = sb3.PPO.load(path, device="cpu")
-        except (ValueError, KeyError, OSError, RuntimeError, zipfile.BadZipFile) as e:
+        except (ValueError, KeyError, OSError, RuntimeError, AssertionError, zipfile.BadZipFile) as e:
             raise ConfigError(
                 f"{str(path)!r} is not a stable-baselines3 PPO model ({type(e).__name__}: {e}); "
                 "train one with: realistic-indoor train"

@@ -49,7 +49,15 @@ def load_learned_model(path: str | Path) -> Any:
         torch.set_num_threads(1)
         try:
             _MODELS[key] = sb3_contrib.MaskablePPO.load(path, device="cpu")
-        except (ValueError, KeyError, OSError, RuntimeError, AttributeError, zipfile.BadZipFile) as e:
+        except (
+            ValueError,
+            KeyError,
+            OSError,
+            RuntimeError,
+            AssertionError,
+            AttributeError,
+            zipfile.BadZipFile,
+        ) as e:
             raise ConfigError(
                 f"{str(path)!r} is not a MaskablePPO model of the learned explorer ({type(e).__name__}: {e})"
             ) from None

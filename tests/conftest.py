@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -9,13 +10,22 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 SHARED = ROOT.parent / "shared"
 REAL_PLANS = SHARED / "data" / "real_floorplans"
+REQUIRE_SHARED = os.environ.get("REALISTIC_INDOOR_REQUIRE_SHARED") == "1"
+"""Set by ``.ci/run``: a test that needs ``../shared`` fails where it is missing instead of skipping."""
+
+
+def missing_shared(reason: str) -> None:
+    """Skip the test for want of the shared data, or fail it where CI requires the data."""
+    if REQUIRE_SHARED:
+        pytest.fail(f"{reason}; REALISTIC_INDOOR_REQUIRE_SHARED=1 requires it", pytrace=False)
+    pytest.skip(reason)
 
 
 @pytest.fixture(scope="session")
 def shared_dir() -> Path:
-    """``../shared`` beside the project; tests that need it skip where it is absent."""
+    """``../shared`` beside the project; tests that need it skip where it is absent (fail in CI)."""
     if not SHARED.is_dir():
-        pytest.skip(f"shared data not found at {SHARED} (tests of real plans need ../shared)")
+        missing_shared(f"shared data not found at {SHARED} (tests of real plans need ../shared)")
     return SHARED
 
 
@@ -24,7 +34,7 @@ def real_plans_dir(shared_dir: Path) -> Path:
     """The folder of real floor plans (``office/`` and ``school/`` XML files)."""
     path = shared_dir / "data" / "real_floorplans"
     if not path.is_dir():
-        pytest.skip(f"real floor plans not found at {path}")
+        missing_shared(f"real floor plans not found at {path}")
     return path
 
 

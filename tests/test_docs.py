@@ -301,7 +301,10 @@ def test_block_runs(block: Block, tmp_path: Path) -> None:
         pytest.skip(f"{block.name}: docs-test: skip ({block.reason})")
     chain = _chain(block)
     if any("../shared/" in b.text or "../shared\n" in b.text for b in chain) and not SHARED.is_dir():
-        pytest.skip(f"{block.name} uses ../shared/ (the shared real plans), not found at {SHARED}")
+        reason = f"{block.name} uses ../shared/ (the shared real plans), not found at {SHARED}"
+        if os.environ.get("REALISTIC_INDOOR_REQUIRE_SHARED") == "1":
+            pytest.fail(f"{reason}; REALISTIC_INDOOR_REQUIRE_SHARED=1 requires it", pytrace=False)
+        pytest.skip(reason)
     cwd = tmp_path / "work"
     cwd.mkdir()
     if SHARED.is_dir():

@@ -68,12 +68,19 @@ class RobotSpec:
         sensor only if the observation has a ``victims`` key.
 
         Raises:
-            ConfigError: If ``env`` is not one of this package's environments.
+            ConfigError: If ``env`` is not one of this package's environments, or has macro
+                actions (agents send primitive actions).
         """
         config = getattr(getattr(env, "unwrapped", env), "config", None)
         if config is None or not hasattr(config, "lidar"):
             raise ConfigError(
                 f"agents need a realistic_indoor environment (ExploreEnv or SearchEnv), got {type(env).__name__}"
+            )
+        if config.action_type not in ("continuous", "discrete"):
+            raise ConfigError(
+                f"agents drive the robot step by step: make the environment with action_type 'continuous' "
+                f"or 'discrete', not {config.action_type!r} (macro actions are for policies that choose goals; "
+                "the learned explorer runs them on its own side in any environment)"
             )
         searching = "victims" in getattr(getattr(env, "observation_space", None), "spaces", {})
         return cls(config.lidar, config.robot, config.victims if searching else None, config.action_type)

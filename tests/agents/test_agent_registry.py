@@ -78,6 +78,12 @@ def test_make_agent__needs_an_environment_of_this_package():
         make_agent("random", gym.make("CartPole-v1"))
 
 
+def test_make_agent__refuses_a_macro_environment_in_one_line():
+    with pytest.raises(ConfigError, match="action_type 'continuous' or 'discrete', not 'frontier'") as error:
+        make_agent("frontier", gym.make("HouseExplore-v0", action_type="frontier"))
+    assert "\n" not in str(error.value)
+
+
 def test_make_agent__passes_options_and_accepts_a_spec():
     agent = make_agent("random", RobotSpec(), hold_steps=3, seed=0)
     assert isinstance(agent, RandomAgent) and agent.hold_steps == 3

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import zipfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -11,9 +12,40 @@ import numpy as np
 from realistic_indoor.agents.base import Agent, RobotSpec
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["PPOAgent", "load_model"]
+__all__ = ["PPOAgent", "cached_model", "load_model"]
 
-_MODELS: dict[str, Any] = {}
+_MODELS: dict[tuple[str, str], Any] = {}
+_BAD_MODEL = (ValueError, KeyError, OSError, RuntimeError, AssertionError, AttributeError, zipfile.BadZipFile)
+"""What loading a file that is a zip archive but not a model of the kind asked for raises."""
+
+
+def cached_model(path: str | Path, load: Callable[[str | Path], Any], kind: str, train: str) -> Any:
+    """A model file loaded once per process by ``load``, or a one-line error.
+
+    Model files are pickles: loading one can run code. Load only models you trust.
+
+    Args:
+        path: The model file (``.zip``).
+        load: Loads it (after the file has been checked to be a zip archive).
+        kind: What the model is, for messages (``"stable-baselines3 PPO model"``).
+        train: The command that trains one, for messages.
+
+    Raises:
+        ConfigError: If the file is missing, is not a zip archive, or is not a model of ``kind``.
+    """
+    key = (kind, str(Path(path).resolve()))
+    if key not in _MODELS:
+        if not Path(path).is_file():
+            raise ConfigError(f"{kind} {str(path)!r} not found (train one with: {train})")
+        if not zipfile.is_zipfile(path):
+            raise ConfigError(f"{str(path)!r} is not a model archive (a .zip file holding a {kind})")
+        try:
+            _MODELS[key] = load(path)
+        except _BAD_MODEL as e:
+            raise ConfigError(
+                f"{str(path)!r} is not a {kind} ({type(e).__name__}: {e}); train one with: {train}"
+            ) from None
+    return _MODELS[key]
 
 
 def load_model(path: str | Path) -> Any:
@@ -22,26 +54,17 @@ def load_model(path: str | Path) -> Any:
     Model files are pickles: loading one can run code. Load only models you trust.
 
     Raises:
-        ConfigError: If the file is missing or stable-baselines3 / torch are not installed.
+        ConfigError: If the file is missing, is not a model archive, or stable-baselines3 /
+            torch are not installed.
     """
     from realistic_indoor.agents.rl.train import require_rl
 
-    key = str(Path(path).resolve())
-    if key not in _MODELS:
-        if not Path(path).is_file():
-            raise ConfigError(f"PPO model {str(path)!r} not found (train one with: realistic-indoor train)")
-        if not zipfile.is_zipfile(path):
-            raise ConfigError(f"{str(path)!r} is not a model archive (a .zip saved by stable-baselines3)")
+    def load(file: str | Path) -> Any:
         torch, sb3 = require_rl()
         torch.set_num_threads(1)
-        try:
-            _MODELS[key] = sb3.PPO.load(path, device="cpu")
-        except (ValueError, KeyError, OSError, RuntimeError, AssertionError, zipfile.BadZipFile) as e:
-            raise ConfigError(
-                f"{str(path)!r} is not a stable-baselines3 PPO model ({type(e).__name__}: {e}); "
-                "train one with: realistic-indoor train"
-            ) from None
-    return _MODELS[key]
+        return sb3.PPO.load(file, device="cpu")
+
+    return cached_model(path, load, "stable-baselines3 PPO model", "realistic-indoor train")
 
 
 class PPOAgent(Agent):

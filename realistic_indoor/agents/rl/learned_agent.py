@@ -9,21 +9,18 @@ training: at each decision the candidates and the share of the step limit left, 
 
 from __future__ import annotations
 
-import zipfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from realistic_indoor.agents.base import Agent, RobotSpec
-from realistic_indoor.errors import ConfigError
+from realistic_indoor.agents.rl.agent import cached_model
 
 __all__ = ["DEFAULT_MODEL", "LearnedAgent", "load_learned_model"]
 
 DEFAULT_MODEL = Path(__file__).resolve().parents[2] / "data" / "learned_explorer.zip"
 """The committed model that ``make_agent("learned", env)`` loads (``learned:PATH`` for another)."""
-
-_MODELS: dict[str, Any] = {}
 
 
 def load_learned_model(path: str | Path) -> Any:
@@ -37,31 +34,14 @@ def load_learned_model(path: str | Path) -> Any:
     """
     from realistic_indoor.agents.rl.learned import require_learned
 
-    key = str(Path(path).resolve())
-    if key not in _MODELS:
-        if not Path(path).is_file():
-            raise ConfigError(
-                f"learned model {str(path)!r} not found (train one with: realistic-indoor train --preset learned)"
-            )
-        if not zipfile.is_zipfile(path):
-            raise ConfigError(f"{str(path)!r} is not a model archive (a .zip saved by MaskablePPO)")
+    def load(file: str | Path) -> Any:
         torch, sb3_contrib = require_learned()
         torch.set_num_threads(1)
-        try:
-            _MODELS[key] = sb3_contrib.MaskablePPO.load(path, device="cpu")
-        except (
-            ValueError,
-            KeyError,
-            OSError,
-            RuntimeError,
-            AssertionError,
-            AttributeError,
-            zipfile.BadZipFile,
-        ) as e:
-            raise ConfigError(
-                f"{str(path)!r} is not a MaskablePPO model of the learned explorer ({type(e).__name__}: {e})"
-            ) from None
-    return _MODELS[key]
+        return sb3_contrib.MaskablePPO.load(file, device="cpu")
+
+    return cached_model(
+        path, load, "MaskablePPO model of the learned explorer", "realistic-indoor train --preset learned"
+    )
 
 
 class LearnedAgent(Agent):

@@ -12,7 +12,12 @@ from realistic_indoor.building.building import Building
 from realistic_indoor.envs.actions import ActionMap
 from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.macro import MACRO_ACTION_TYPES, MACRO_ACTIONS, MacroActions
-from realistic_indoor.envs.observations import GlobalMapObservation, explore_observations
+from realistic_indoor.envs.observations import (
+    TIME_LEFT_SPACE,
+    GlobalMapObservation,
+    explore_observations,
+    time_left,
+)
 from realistic_indoor.envs.presets import base_config
 from realistic_indoor.envs.rewards import auc_weight, reward_terms, weighted_sum
 from realistic_indoor.envs.simulation import Simulation, StepOutcome
@@ -228,7 +233,7 @@ class ExploreEnv(gym.Env):
         if "candidates" in self._extras:
             obs_spaces["candidates"] = self._macro.features_space()
         if "time_left" in self._extras:
-            obs_spaces["time_left"] = spaces.Box(0.0, 1.0, (1,), np.float32)
+            obs_spaces["time_left"] = TIME_LEFT_SPACE
         self.observation_space = spaces.Dict(obs_spaces)
         self._steps = 0
         self._coverage = 0.0
@@ -296,12 +301,12 @@ class ExploreEnv(gym.Env):
         outcome = self._sim.step(v, w, self.np_random)
         self._steps += 1
         terms = self._reward_terms(outcome)
-        coverage = self._sim.map.coverage
         if self.config.rewards.coverage_auc != 0.0:
+            coverage = self._sim.map.coverage
             terms["coverage_auc"] = (coverage - self._coverage) * auc_weight(
                 self._steps, self.config.max_steps
             )
-        self._coverage = coverage
+            self._coverage = coverage
         reward = weighted_sum(self.config.rewards, terms)
         terminated = self._terminated()
         truncated = self._steps >= self.config.max_steps
@@ -341,9 +346,7 @@ class ExploreEnv(gym.Env):
         if "candidates" in self._extras:
             obs["candidates"] = self._macro.features()
         if "time_left" in self._extras:
-            obs["time_left"] = np.array(
-                [max(0.0, 1.0 - self._steps / self.config.max_steps)], dtype=np.float32
-            )
+            obs["time_left"] = time_left(self._steps, self.config.max_steps)
         return obs
 
     def _make_macro(self) -> MacroActions:

@@ -34,7 +34,7 @@ from realistic_indoor.envs.actions import discrete_index
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.navigation.goals import nearest_points, off_circulation, unobserved_area_near
 from realistic_indoor.navigation.navigator import ExplorerConfig, Found, Navigator, PlanOptions
-from realistic_indoor.navigation.planning import dijkstra, nearest_labels, trace_path
+from realistic_indoor.navigation.planning import dijkstra, nearest_labels
 from realistic_indoor.navigation.regions import RegionConfig, find_regions
 from realistic_indoor.navigation.spec import RobotSpec
 
@@ -174,10 +174,9 @@ def rank_candidates(options: PlanOptions, config: MacroConfig, navigator: Naviga
     costs: list[float] = []
     labels = np.zeros(0, dtype=np.int64)
     if options.victim is not None and options.victim_path is not None:
-        goal, parent = options.victim_path
         goals.append(options.victim_path)
-        cells.append(int(goal))
-        costs.append(_path_cost_m(ctx, parent, goal))
+        cells.append(int(options.victim_path[0]))
+        costs.append(options.victim_cost_m)
     n_victims = len(goals)
     frontiers = options.frontiers
     if frontiers.count and len(goals) < k:
@@ -201,13 +200,6 @@ def rank_candidates(options: PlanOptions, config: MacroConfig, navigator: Naviga
     xy = navigator.map.to_world(flat // w + ctx.box.r0, flat % w + ctx.box.c0).reshape(-1, 2)
     victim = [True] * n_victims + [False] * (len(goals) - n_victims)
     return Candidates(goals, victim, xy, np.array(costs, dtype=float), size, area, in_room.astype(bool))
-
-
-def _path_cost_m(ctx: Any, parent: np.ndarray, goal: int) -> float:
-    """Path cost (m of clear floor) of the path to ``goal``: recomputed along the traced cells."""
-    cells = trace_path(parent, goal)
-    steps = np.hypot(*np.diff(cells, axis=0).T)
-    return float(np.sum(steps * ctx.cost[cells[1:, 0], cells[1:, 1]]) * ctx.resolution_m)
 
 
 class MacroActions:

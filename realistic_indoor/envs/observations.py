@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 __all__ = [
     "EXTRA_OBSERVATIONS",
     "POSE_LIMIT_M",
+    "TIME_LEFT_SPACE",
     "GlobalMapConfig",
     "GlobalMapObservation",
     "LocalMapObservation",
@@ -24,6 +25,7 @@ __all__ = [
     "ScanObservation",
     "VelocityObservation",
     "explore_observations",
+    "time_left",
 ]
 
 POSE_LIMIT_M = 1000.0
@@ -152,6 +154,15 @@ class PoseObservation:
         x = max(-POSE_LIMIT_M, min(POSE_LIMIT_M, x))
         y = max(-POSE_LIMIT_M, min(POSE_LIMIT_M, y))
         return np.array((x, y, heading), dtype=np.float32)
+
+
+TIME_LEFT_SPACE = spaces.Box(0.0, 1.0, (1,), np.float32)
+"""The space of the ``time_left`` observation."""
+
+
+def time_left(steps: int, max_steps: int) -> np.ndarray:
+    """The ``time_left`` observation: ``(1,)`` float32, the share of the step limit still to come."""
+    return np.array([max(0.0, 1.0 - steps / max_steps)], dtype=np.float32)
 
 
 def explore_observations(config: EnvConfig) -> dict[str, object]:

@@ -149,12 +149,14 @@ class PlanOptions(NamedTuple):
         victim: Index (in :attr:`Navigator.victims`) of the detected victim to go to next, or
             ``None``: none is waiting, or none can be reached.
         victim_path: The path to that victim (``None`` when ``victim`` is ``None``).
+        victim_cost_m: That path's cost (m of clear floor; ``nan`` when ``victim`` is ``None``).
     """
 
     ctx: PlanContext
     frontiers: Frontiers
     victim: int | None
     victim_path: Found | None
+    victim_cost_m: float = math.nan
 
 
 class Navigator:
@@ -349,9 +351,9 @@ class Navigator:
         pose = self.pose
         ctx = self._context(pose)
         victim = self.victims.next_target() if self.config.victim_approach_m is not None else None
-        victim_path = None
+        victim_path, victim_cost_m = None, math.nan
         if victim is not None:
-            victim_path = self._to_victim(ctx, self.victims.positions[victim])
+            victim_path, victim_cost_m = self._to_victim(ctx, self.victims.positions[victim])
             if victim_path is None:
                 self.victims.visited[victim] = True
                 victim = None
@@ -360,7 +362,7 @@ class Navigator:
         drop = self._near(ctx, [pose[:2]], c.min_goal_m) | self._near(
             ctx, self.blacklist, c.blacklist_radius_m
         )
-        return PlanOptions(ctx, frontiers.without(drop), victim, victim_path)
+        return PlanOptions(ctx, frontiers.without(drop), victim, victim_path, victim_cost_m)
 
     def commit(
         self, options: PlanOptions, found: Found | None, to_victim: bool = False, frontier: bool = True
@@ -421,10 +423,13 @@ class Navigator:
             out[max(r - k, 0) : max(r + k + 1, 0), max(c - k, 0) : max(c + k + 1, 0)] = True
         return out
 
-    def _to_victim(self, ctx: PlanContext, xy: np.ndarray) -> Found | None:
+    def _to_victim(self, ctx: PlanContext, xy: np.ndarray) -> tuple[Found | None, float]:
+        """The path to within ``victim_approach_m`` of ``xy`` and its cost (m), or ``(None, nan)``."""
         rows, cols = np.indices(ctx.state.shape)
         centre = self.map.to_world(np.array([ctx.box.r0]), np.array([ctx.box.c0]))[0]
         d = np.hypot(centre[0] + cols * ctx.resolution_m - xy[0], centre[1] + rows * ctx.resolution_m - xy[1])
         goals = (d <= self.config.victim_approach_m) & np.isfinite(ctx.cost)
-        _, parent, goal = dijkstra(ctx.cost, ctx.start, goals, first_only=True)
-        return None if goal < 0 else (goal, parent)
+        dist, parent, goal = dijkstra(ctx.cost, ctx.start, goals, first_only=True)
+        if goal < 0:
+            return None, math.nan
+        return (goal, parent), float(dist.ravel()[goal]) * ctx.resolution_m

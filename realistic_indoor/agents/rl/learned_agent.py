@@ -16,6 +16,8 @@ import numpy as np
 
 from realistic_indoor.agents.base import Agent, RobotSpec
 from realistic_indoor.agents.rl.agent import cached_model
+from realistic_indoor.envs.macro import FrontierActions, MacroConfig
+from realistic_indoor.envs.observations import time_left
 
 __all__ = ["DEFAULT_MODEL", "LearnedAgent", "load_learned_model"]
 
@@ -68,9 +70,6 @@ class LearnedAgent(Agent):
         max_steps: int = 6000,
         deterministic: bool = True,
     ) -> None:
-        from realistic_indoor.envs.macro import FrontierActions, MacroConfig
-        from realistic_indoor.navigation.spec import RobotSpec as Spec
-
         super().__init__(spec)
         model = DEFAULT_MODEL if model is None else model
         self.model = load_learned_model(model) if isinstance(model, (str, Path)) else model
@@ -78,7 +77,7 @@ class LearnedAgent(Agent):
         self.deterministic = deterministic
         self.max_steps = int(max_steps)
         k = int(self.model.action_space.n)
-        drive = Spec(spec.lidar, spec.robot, spec.victims, "continuous")
+        drive = RobotSpec(spec.lidar, spec.robot, spec.victims, "continuous")
         self.macro = FrontierActions(drive, MacroConfig(n_candidates=k))
         self.reset()
 
@@ -98,8 +97,7 @@ class LearnedAgent(Agent):
         else:
             pending = macro.sense(obs, info)
         if pending:
-            left = max(0.0, 1.0 - self._steps / self.max_steps)
-            policy_obs = {"candidates": macro.features(), "time_left": np.array([left], dtype=np.float32)}
+            policy_obs = {"candidates": macro.features(), "time_left": time_left(self._steps, self.max_steps)}
             choice, _ = self.model.predict(
                 policy_obs, action_masks=macro.action_masks(), deterministic=self.deterministic
             )

@@ -50,9 +50,6 @@ __all__ = [
 LEARNED_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
 """The ids the learned explorer trains on by default (their default sizes and step limits)."""
 
-_ROOM_FACTOR = 4.0
-"""The structure explorer's weight on a frontier in a room (``StructureConfig.room_factor``)."""
-
 
 @dataclass(frozen=True)
 class LearnedConfig:
@@ -168,21 +165,23 @@ def expert_choice(candidates: np.ndarray, mask: np.ndarray) -> int:
     """The structure explorer's rule on a decision's candidates: the action it would take.
 
     A detected victim (always candidate 0 when there is one) first; otherwise the candidate with
-    the smallest path cost, a frontier off the corridors and halls counting ``4`` times its cost
-    (``StructureConfig.room_factor``), ties to the nearer. Among the K candidates only: a goal of
+    the smallest path cost, a frontier off the corridors and halls counting the structure
+    explorer's ``room_factor`` (4) times its cost, ties to the nearer. Among the K candidates only: a goal of
     the structure explorer farther than the K-th nearest frontier is not offered.
 
     Args:
         candidates: The ``candidates`` observation (flat, ``K * F``).
         mask: ``(K,)`` bool, the candidates that exist.
     """
+    from realistic_indoor.agents.structure import StructureConfig
     from realistic_indoor.envs.macro import CANDIDATE_FEATURES
 
+    room_factor = StructureConfig().room_factor
     rows = np.asarray(candidates, dtype=float).reshape(len(mask), len(CANDIDATE_FEATURES))
     if rows[0, CANDIDATE_FEATURES.index("victim")] > 0.5:
         return 0
     cost = rows[:, CANDIDATE_FEATURES.index("path_cost")]
-    factor = np.where(rows[:, CANDIDATE_FEATURES.index("in_room")] > 0.5, _ROOM_FACTOR, 1.0)
+    factor = np.where(rows[:, CANDIDATE_FEATURES.index("in_room")] > 0.5, room_factor, 1.0)
     return int(np.argmin(np.where(mask, cost * factor, np.inf)))
 
 
@@ -222,8 +221,9 @@ def make_learned_env(env_id: str, n_candidates: int = 16, reward_scale: float = 
 
     import realistic_indoor.envs  # noqa: F401 - registers the ids
     from realistic_indoor.agents.rl.scorer import OBS_KEYS
+    from realistic_indoor.envs.rewards import RewardWeights
 
-    rewards = {"new_area": 0.0, "collision": 0.0, "time": 0.0, "victim": 0.0, "coverage_auc": reward_scale}
+    rewards = replace(RewardWeights.metric(), coverage_auc=reward_scale)
     env = gym.make(
         env_id, action_type="frontier", macro={"n_candidates": n_candidates}, rewards=rewards, **kwargs
     )

@@ -77,14 +77,14 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.cli import checkout_commit, run_folder, script_command
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command, write_report
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="learned_explorer")
     if args.report_only:
-        return report_only(out)
+        return write_report(out, "learned_explorer", analyse)
     learned = f"learned:{args.model}" if args.model else "learned"
     agents = {LEARNED: learned, **BASELINES}
     episodes = args.episodes or setup.episodes
@@ -105,7 +105,7 @@ def main(argv: list[str] | None = None) -> int:
         "sets": [*setup.sets, *(REAL if real else ())],
     }
     write_results(results, out / "learned_explorer", meta)
-    return _report(results, meta, out)
+    return write_report(out, "learned_explorer", analyse, results, meta)
 
 
 def env_sets(setup: Setup) -> tuple[list, list]:
@@ -126,23 +126,6 @@ def env_sets(setup: Setup) -> tuple[list, list]:
     if setup.real and not real:
         print(f"no real plans at {REAL_PLANS}: the real-buildings sets are left out", flush=True)
     return generated, real
-
-
-def report_only(out: Path) -> int:
-    """Write the report again from ``out/learned_explorer/results.json``."""
-    from realistic_indoor.evaluation import read_results
-
-    results, meta = read_results(out / "learned_explorer" / "results.json")
-    return _report(results, meta, out)
-
-
-def _report(results: list, meta: dict[str, Any], out: Path) -> int:
-    from realistic_indoor.files import write_text
-
-    report = analyse(results, meta)
-    write_text(out / "learned_explorer.md", report)
-    print(report)
-    return 0
 
 
 def analyse(results: list, meta: dict[str, Any]) -> str:

@@ -101,14 +101,14 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.cli import checkout_commit, run_folder, script_command
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command, write_report
     from realistic_indoor.evaluation import make_tasks, run_tasks, write_results
 
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="step_definition")
     if args.report_only:
-        return report_only(out)
+        return write_report(out, "step_definition", analyse)
     episodes = args.episodes or setup.episodes
     results, wall_s = [], {}
     for definition in DEFINITIONS:
@@ -128,24 +128,7 @@ def main(argv: list[str] | None = None) -> int:
         "workers": args.workers or setup.workers,
     }
     write_results(results, out / "step_definition", meta)
-    return _report(results, meta, out)
-
-
-def report_only(out: Path) -> int:
-    """Write the report again from ``out/step_definition/results.json``."""
-    from realistic_indoor.evaluation import read_results
-
-    results, meta = read_results(out / "step_definition" / "results.json")
-    return _report(results, meta, out)
-
-
-def _report(results: list, meta: dict[str, Any], out: Path) -> int:
-    from realistic_indoor.files import write_text
-
-    report = analyse(results, meta)
-    write_text(out / "step_definition.md", report)
-    print(report)
-    return 0
+    return write_report(out, "step_definition", analyse, results, meta)
 
 
 def env_specs(setup: Setup, definition: str) -> list:

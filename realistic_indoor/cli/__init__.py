@@ -16,6 +16,7 @@ import sys
 import warnings
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from realistic_indoor import __version__
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
@@ -93,6 +94,33 @@ def run_folder(out: str | None, default: Path, *, small: bool, report_only: bool
     folder = Path(tempfile.mkdtemp(prefix=f"{name}_small_"))
     print(f"--small without --out: writing to {folder}", flush=True)
     return folder
+
+
+def write_report(
+    out: Path,
+    name: str,
+    analyse: Callable[[list, dict[str, Any]], str],
+    results: list | None = None,
+    meta: dict[str, Any] | None = None,
+) -> int:
+    """Write a script's report, ``analyse(results, meta)``, to ``out/NAME.md`` and print it.
+
+    Without ``results`` (``--report-only``) they are read back from ``out/NAME/results.json``,
+    where the run wrote them (:func:`~realistic_indoor.evaluation.write_results`).
+
+    Returns:
+        0, the script's exit code.
+    """
+    from realistic_indoor.files import write_text
+
+    if results is None:
+        from realistic_indoor.evaluation import read_results
+
+        results, meta = read_results(out / name / "results.json")
+    report = analyse(results, meta)
+    write_text(out / f"{name}.md", report)
+    print(report)
+    return 0
 
 
 def script_command(script: str, argv: list[str] | None) -> str:

@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
 
     _check_numbers(args)
     learned = _is_learned(args.preset)
-    env_ids = _learned_ids(args.envs) if learned else env_ids_of(args.envs)
+    env_ids = env_ids_of(args.envs)
     config = _learned_config(args, env_ids) if learned else _config(args, env_ids)
     plan = _eval_plan(args)
     eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs else config.env_ids
@@ -146,14 +146,6 @@ def _is_learned(preset: str) -> bool:
     from realistic_indoor.agents.rl.learned import LEARNED_PRESETS
 
     return preset in LEARNED_PRESETS
-
-
-def _learned_ids(envs: str) -> tuple[str, ...]:
-    """The training ids of a learned preset: ``realistic`` (offices, schools, houses), ``random``, or ids."""
-    from realistic_indoor.agents.rl.config import env_ids_of
-    from realistic_indoor.agents.rl.learned import LEARNED_IDS
-
-    return LEARNED_IDS if envs == "realistic" else env_ids_of(envs)
 
 
 def _learned_config(args: argparse.Namespace, env_ids: tuple[str, ...]):

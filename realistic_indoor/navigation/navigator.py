@@ -213,7 +213,6 @@ class Navigator:
         self._ranges = np.zeros(0, dtype=np.float32)
         self._collided = False
         self._mode = "drive"
-        self._wants_plan = False
         self.reflexes.reset()
 
     # -- one step ----------------------------------------------------------------------------------------
@@ -268,8 +267,7 @@ class Navigator:
             self._mode = "stuck"
         else:
             self._mode = "drive"
-        self._wants_plan = self._mode == "drive" and (self._collided or self._needs_plan(pose))
-        return self._wants_plan
+        return self._mode == "drive" and (self._collided or self._needs_plan(pose))
 
     def command(self) -> tuple[float, float]:
         """The velocity command ``(v m/s, w rad/s)`` of this step, after :meth:`sense` (and the plan it asked for)."""

@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from realistic_indoor.agents.rl.config import REALISTIC_IDS
 from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path, write_text
@@ -47,8 +48,9 @@ __all__ = [
     "train_learned",
 ]
 
-LEARNED_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
-"""The ids the learned explorer trains on by default (their default sizes and step limits)."""
+LEARNED_IDS = REALISTIC_IDS
+"""The ids the learned explorer trains on by default, the ``realistic`` set (offices, schools and
+houses, at their default sizes and step limits)."""
 
 
 @dataclass(frozen=True)

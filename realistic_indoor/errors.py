@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-__all__ = ["ActionError", "ConfigError", "PlanFormatError", "RealisticIndoorError"]
+__all__ = ["ActionError", "ConfigError", "PlanFormatError", "PlanRepairWarning", "RealisticIndoorError"]
 
 
 class RealisticIndoorError(ValueError):
@@ -38,4 +38,13 @@ class ActionError(RealisticIndoorError):
 
     Raised for non-finite or wrongly shaped continuous actions and for discrete actions that
     are not integers in range; the message names the action given and what is allowed.
+    """
+
+
+class PlanRepairWarning(UserWarning):
+    """A plan contradicted itself or held an invalid outline, and was repaired by a documented rule.
+
+    The message is one line naming the file, the element concerned, what was wrong and what was
+    done. Reading with ``strict=True`` raises a :class:`PlanFormatError` instead. The rules are
+    in ``docs/formats.md`` (floor-plan XML) and ``docs/failures.md`` (every plan).
     """

@@ -1,5 +1,9 @@
-"""The data model: ``Building``, ``Room``, ``Door``, labels, topology, walls and checks."""
+"""The data model: ``Building``, ``Room``, ``Door``, labels, topology, walls and checks.
 
+Buildings from outside the package pass one gate, :func:`admit_building`.
+"""
+
+from realistic_indoor.building.admit import admit_building
 from realistic_indoor.building.building import Building
 from realistic_indoor.building.check import Finding, InvalidBuildingError, check_building
 from realistic_indoor.building.door import Door
@@ -23,6 +27,7 @@ __all__ = [
     "InvalidBuildingError",
     "Room",
     "SemanticLabel",
+    "admit_building",
     "check_building",
     "parse_building_type",
     "parse_label",

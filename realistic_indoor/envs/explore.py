@@ -252,7 +252,8 @@ class ExploreEnv(gym.Env):
         super().reset(seed=seed)
         options = require_reset_options(options, self.reset_options)
         building = options.get("building")
-        self._sim.load(episode_building(self._source(self.np_random) if building is None else building))
+        drawn = building is None
+        self._sim.load(episode_building(self._source(self.np_random) if drawn else building, given=not drawn))
         self._reset_simulation(options)
         self._steps = 0
         self._coverage = self._sim.map.coverage

@@ -22,6 +22,7 @@ from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Union
 
+from realistic_indoor.building.admit import admit_building
 from realistic_indoor.building.building import Building
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import GENERATOR_NAMES
@@ -131,6 +132,7 @@ class FixedBuilding:
     def __post_init__(self) -> None:
         if not isinstance(self.building, Building):
             raise ConfigError(f"EnvConfig.building must be a Building, got {type(self.building).__name__}")
+        object.__setattr__(self, "building", admit_building(self.building, "EnvConfig.building"))
 
     def __call__(self, rng: np.random.Generator) -> Building:
         """Return the building; ``rng`` is not used."""
@@ -175,14 +177,23 @@ BuildingSource = Union[GeneratedBuildings, CustomGenerator, FixedBuilding, PlanF
 _KINDS = (GeneratedBuildings, CustomGenerator, FixedBuilding, PlanFile)
 
 
-def episode_building(building: object) -> Building:
+def episode_building(building: object, given: bool = False) -> Building:
     """``building`` as an episode's building: given in ``reset``'s options or drawn from a source.
+
+    Args:
+        building: The building.
+        given: Whether the user gave it (``reset(options={"building": ...})``): such a building
+            passes :func:`~realistic_indoor.building.admit_building`, as plans read from files
+            do; drawn ones are the source's (generated, or checked when the source was made).
 
     Raises:
         ConfigError: If it is not a :class:`~realistic_indoor.building.Building`.
+        PlanFormatError: If a given building is refused by the gate.
     """
     if not isinstance(building, Building):
         raise ConfigError(f"the building of an episode must be a Building, got {type(building).__name__}")
+    if given:
+        return admit_building(building, "reset(options['building'])")
     return building
 
 

@@ -440,6 +440,8 @@ class BatchedExploreEnv(VectorEnv):
         generator. On an error the generators drawn from are put back as they were.
         """
         given = (options or {}).get("building")
+        if given is not None:
+            given = episode_building(given, given=True)
         states = {k: self._rngs[k].bit_generator.state for k in started}
         held = {id(w.building): w for w in self._batch.worlds if w is not None}
         worlds: dict[int, World] = {}

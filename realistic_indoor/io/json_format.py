@@ -74,8 +74,8 @@ def from_dict(data: dict[str, Any], source: str = "<data>") -> Building:
         return Building(data["building_type"], tuple(rooms), tuple(doors), dict(data.get("metadata", {})))
     except KeyError as e:
         raise PlanFormatError(source, f"missing field {e}", element) from None
-    except (TypeError, ValueError) as e:
-        raise PlanFormatError(source, str(e), element) from None
+    except (TypeError, ValueError, OverflowError) as e:
+        raise PlanFormatError(source, f"invalid value: {e}", element) from None
 
 
 def dumps(b: Building) -> str:
@@ -89,12 +89,26 @@ def loads(text: str, source: str = "<string>") -> Building:
         data = json.loads(text)
     except json.JSONDecodeError as e:
         raise PlanFormatError(source, f"malformed JSON: {e}") from None
+    except RecursionError:
+        raise PlanFormatError(source, "malformed JSON: nested too deeply to be a building file") from None
     return from_dict(data, source)
 
 
 def read(path: str | Path) -> Building:
-    """Read a building from a JSON file."""
-    return loads(Path(path).read_text(encoding="utf-8"), str(path))
+    """Read a building from a JSON file (UTF-8).
+
+    Raises:
+        PlanFormatError: If the file cannot be read, is not UTF-8 text, or is not a building file.
+    """
+    try:
+        data = Path(path).read_bytes()
+    except OSError as e:
+        raise PlanFormatError(path, f"cannot read the file ({e.strerror or e})") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise PlanFormatError(path, f"not UTF-8 text (byte {e.start}): is it a JSON plan?") from None
+    return loads(text, str(path))
 
 
 def write(b: Building, path: str | Path) -> list[Path]:

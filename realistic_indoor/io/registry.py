@@ -6,13 +6,14 @@ import importlib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from realistic_indoor.building.admit import admit_building
 from realistic_indoor.errors import PlanFormatError, RealisticIndoorError
 from realistic_indoor.files import check_output_path
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
 
-__all__ = ["FORMATS", "READABLE", "WRITABLE", "format_of", "load", "save"]
+__all__ = ["FORMATS", "MAX_PLAN_BYTES", "READABLE", "WRITABLE", "format_of", "load", "save"]
 
 # name: (file endings, module under realistic_indoor.io, can read, can write)
 FORMATS: dict[str, tuple[tuple[str, ...], str, bool, bool]] = {
@@ -27,6 +28,8 @@ FORMATS: dict[str, tuple[tuple[str, ...], str, bool, bool]] = {
     "glb": ((".glb",), "world3d.gltf", False, True),
     "obj": ((".obj",), "world3d.obj", False, True),
 }
+MAX_PLAN_BYTES = 256 * 1024 * 1024
+"""Largest plan file :func:`load` reads (bytes); the largest shared real plan has 0.5 MB."""
 READABLE = tuple(k for k, v in FORMATS.items() if v[2])
 WRITABLE = tuple(k for k, v in FORMATS.items() if v[3])
 
@@ -56,23 +59,32 @@ def _module(fmt: str):
 def load(path: str | Path, fmt: str | None = None, *, strict: bool = False, **options: Any) -> Building:
     """Read a building from ``path``; the format comes from the ending unless ``fmt`` is given.
 
-    A ``.xml`` file whose root element is ``<world>`` is read as World Generator XML.
+    A ``.xml`` file whose root element is ``<world>`` is read as World Generator XML. Every
+    plan passes :func:`~realistic_indoor.building.admit.admit_building` (finite coordinates
+    within a plausible extent, valid outlines, doors naming existing rooms, at least one room),
+    which refuses what cannot be used and repairs a self-crossing outline with a warning.
 
     Args:
         path: The file.
         fmt: A format name of :data:`FORMATS`, to override the one the ending gives.
-        strict: Floor-plan XML: refuse a plan whose portals or outlines contradict each other
-            (raise) instead of repairing it with a ``PlanRepairWarning``. Other formats are read
-            as they are either way.
+        strict: Refuse a plan that needs a repair (raise) instead of repairing it with a
+            ``PlanRepairWarning``: in floor-plan XML, portals or outlines that contradict each
+            other; in any format, an outline that crosses itself.
         **options: Passed to the format's reader (e.g. ``infer_entrances=True``).
 
     Raises:
-        PlanFormatError: If the file is missing, unreadable or malformed, or, with ``strict``,
-            has a defect the reader would repair.
+        PlanFormatError: If the file is missing, unreadable, larger than
+            :data:`MAX_PLAN_BYTES`, malformed, refused by the gate, or, with ``strict``, has a
+            defect that would be repaired.
     """
     path = Path(path)
     if not path.is_file():
         raise PlanFormatError(path, "no such file" if not path.exists() else "not a file")
+    size = path.stat().st_size
+    if size > MAX_PLAN_BYTES:
+        raise PlanFormatError(
+            path, f"{size:,} bytes; plan files of at most {MAX_PLAN_BYTES:,} bytes are read"
+        )
     fmt = format_of(path, fmt)
     if fmt == "floorplan" and _root_tag(path) == "world":
         fmt = "worldgen"
@@ -82,7 +94,7 @@ def load(path: str | Path, fmt: str | None = None, *, strict: bool = False, **op
         )
     if strict and fmt == "floorplan":
         options["strict"] = True
-    return _module(fmt).read(path, **options)
+    return admit_building(_module(fmt).read(path, **options), path, strict=strict)
 
 
 def save(building: Building, path: str | Path, fmt: str | None = None, **options: Any) -> list[Path]:
@@ -107,6 +119,10 @@ def _root_tag(path: Path) -> str | None:
     """The first element's tag, read cheaply (``None`` if it cannot be found)."""
     import re
 
-    head = path.read_bytes()[:4096].decode("utf-8", "replace")
+    try:
+        with open(path, "rb") as f:
+            head = f.read(4096).decode("utf-8", "replace")
+    except OSError as e:
+        raise PlanFormatError(path, f"cannot read the file ({e.strerror or e})") from None
     m = re.search(r"<\s*([A-Za-z_][\w.-]*)", re.sub(r"<\?.*?\?>|<!--.*?-->", "", head, flags=re.S))
     return m.group(1) if m else None

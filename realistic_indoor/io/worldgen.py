@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
+from realistic_indoor.building.admit import MAX_SPAN_M
 from realistic_indoor.errors import ConfigError, PlanFormatError
 from realistic_indoor.files import atomic_path
 from realistic_indoor.io.floorplan.xmlfile import parse_root
@@ -107,7 +108,8 @@ def read(
         ``metadata`` holds ``source``, ``name`` (the world's) and ``grid_m``.
 
     Raises:
-        PlanFormatError: If the file is missing or malformed, a module is unknown, a room leaves
+        PlanFormatError: If the file is missing or malformed, the world is larger than
+            :data:`~realistic_indoor.building.admit.MAX_SPAN_M` a side, a module is unknown, a room leaves
             the world or overlaps another, or a door touches no room.
     """
     source, path = str(path), Path(path)
@@ -116,6 +118,13 @@ def read(
     if root.tag != "world":
         raise PlanFormatError(path, f"root element is <{root.tag}>, not <world>: not a World Generator file")
     depth, width = (_int(root, k, path, "world", minimum=1) for k in ("depth", "width"))
+    if max(depth, width) * grid_m > MAX_SPAN_M:
+        raise PlanFormatError(
+            path,
+            f"a {depth} x {width} cell world is {depth * grid_m:g} m x {width * grid_m:g} m; "
+            f"at most {MAX_SPAN_M:g} m a side is read",
+            "world",
+        )
     grid = np.full((depth, width), -1, dtype=int)
     rooms, hallway = _read_rooms(root, path, sizes, grid, grid_m)
     rooms, openings = _merge_hallways(hallway, grid, rooms, grid_m)

@@ -15,21 +15,12 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
-from realistic_indoor.errors import PlanFormatError
+from realistic_indoor.errors import PlanFormatError, PlanRepairWarning
 
 __all__ = ["DEFECTS", "PlanRepairWarning", "RepairLog"]
 
 DEFECTS = ("targets_differ", "one_sided_portal", "door_off_wall", "overlap")
 """Kinds of defect the reader repairs (and refuses under ``strict``)."""
-
-
-class PlanRepairWarning(UserWarning):
-    """A plan file contradicted itself and the reader repaired it by a documented rule.
-
-    The message is one line naming the file, the spaces and the portal concerned, what was
-    wrong and what the reader did. ``read(..., strict=True)`` raises a
-    :class:`~realistic_indoor.errors.PlanFormatError` instead.
-    """
 
 
 class RepairLog:

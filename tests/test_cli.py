@@ -199,14 +199,49 @@ def test_run_script__user_error_is_one_line_and_exit_1(capsys):
     assert run_script(lambda: None, "x.py") == 0
 
 
-def test_run_script__a_bug_keeps_its_traceback():
+def test_run_script__a_bug_is_one_line_with_exit_code_70_and_its_traceback_under_debug(capsys, monkeypatch):
     from realistic_indoor.cli import run_script
 
     def buggy() -> int:
-        raise KeyError("internal")
+        raise KeyError("internal\nsecond line")
 
+    monkeypatch.delenv("REALISTIC_INDOOR_DEBUG", raising=False)
+    assert run_script(buggy, "x.py") == 70
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("x.py: internal error: KeyError: ")
+    assert "--debug" in err and "Traceback" not in err
+    with pytest.raises(KeyError):
+        run_script(buggy, "x.py", debug=True)
+    monkeypatch.setenv("REALISTIC_INDOOR_DEBUG", "1")
     with pytest.raises(KeyError):
         run_script(buggy, "x.py")
+
+
+def test_run_script__a_file_that_cannot_be_written_is_one_line_exit_1(capsys):
+    import errno
+
+    from realistic_indoor.cli import run_script
+
+    def full() -> int:
+        raise OSError(errno.ENOSPC, "No space left on device", "out/plan.json")
+
+    assert run_script(full, "x.py") == 1
+    assert capsys.readouterr().err == (
+        "x.py: error: cannot use out/plan.json: No space left on device; free some space or write elsewhere\n"
+    )
+
+
+def test_main_debug_option_lets_a_bug_raise(monkeypatch):
+    import realistic_indoor.cli.info as info
+
+    def broken(args):
+        raise ZeroDivisionError("bug")
+
+    monkeypatch.setattr(info, "run", broken)
+    monkeypatch.delenv("REALISTIC_INDOOR_DEBUG", raising=False)
+    assert main(["info", "x.json"]) == 70
+    with pytest.raises(ZeroDivisionError):
+        main(["--debug", "info", "x.json"])
 
 
 # --- convert and render over folders: bad plans are left out, named and counted ---

@@ -77,7 +77,7 @@ def admit_building(building: Building, source: object = "<building>", *, strict:
     """
     rooms = building.rooms
     if not rooms:
-        raise PlanFormatError(source, "no rooms: a plan needs at least one room", "rooms")
+        raise PlanFormatError(source, "the plan has no rooms")
     _check_counts(building, source)
     _check_ids([r.id for r in rooms], "room", source)
     _check_ids([d.id for d in building.doors], "door", source)

@@ -21,7 +21,22 @@ from typing import Any
 from realistic_indoor import __version__
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
 
-__all__ = ["build_parser", "checkout_commit", "main", "run_folder", "run_script", "script_command"]
+__all__ = [
+    "DEBUG_VARIABLE",
+    "INTERNAL_ERROR",
+    "build_parser",
+    "checkout_commit",
+    "main",
+    "run_folder",
+    "run_script",
+    "script_command",
+]
+
+INTERNAL_ERROR = 70
+"""Exit code of an unexpected exception: a bug, told apart from a refused input (1, 2)."""
+
+DEBUG_VARIABLE = "REALISTIC_INDOOR_DEBUG"
+"""Environment variable that, set to 1, lets internal errors show their traceback (as ``--debug``)."""
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -31,6 +46,11 @@ def build_parser() -> argparse.ArgumentParser:
         description="Structurally realistic buildings for exploration and search-and-rescue robots.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument(
+        "--debug",
+        action="store_true",
+        help=f"show the traceback of an internal error (a bug) instead of one line; also {DEBUG_VARIABLE}=1",
+    )
     sub = parser.add_subparsers(title="commands", dest="command", metavar="COMMAND")
     for info in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
         if not info.name.startswith("_"):
@@ -40,13 +60,19 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; returns the exit code (0 success, 1 user error, 2 usage error)."""
+    """Run the command line; returns the exit code.
+
+    Returns:
+        0 on success, 1 for a user error (a bad file or value, one line), 2 for a usage error
+        (argparse), :data:`INTERNAL_ERROR` for a bug (one line; ``--debug`` shows the traceback),
+        130 when interrupted.
+    """
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
-    return run_script(lambda: args.func(args), f"realistic-indoor {args.command}")
+    return run_script(lambda: args.func(args), f"realistic-indoor {args.command}", debug=args.debug)
 
 
 def checkout_commit(folder: str | os.PathLike[str]) -> str | None:
@@ -134,43 +160,85 @@ def script_command(script: str, argv: list[str] | None) -> str:
     return " ".join([f".venv/bin/python {script}", *map(shlex.quote, given)])
 
 
-def run_script(main_fn: Callable[[], int | None], name: str) -> int:
-    """Run a script's ``main`` as the command line runs a subcommand: user errors on one line.
+def run_script(main_fn: Callable[[], int | None], name: str, debug: bool = False) -> int:
+    """Run a script's ``main`` as the command line runs a subcommand: every error on one line.
 
     For :func:`main` and the scripts of ``experiments/``: a bad argument or file (any
     :class:`~realistic_indoor.errors.RealisticIndoorError`) prints ``NAME: error: ...`` and
-    returns 1 instead of a traceback; anything else is a bug and keeps its traceback.
+    returns 1; a file that cannot be read or written (``OSError``: no permission, a full disk)
+    prints ``NAME: error: cannot ...`` and returns 1; anything else is a bug and prints
+    ``NAME: internal error: ...`` and returns :data:`INTERNAL_ERROR`, with the traceback only
+    under ``debug`` (or the environment variable :data:`DEBUG_VARIABLE` set to 1).
 
     Args:
         main_fn: The script's entry point, returning its exit code.
         name: The script's name, shown before the message.
+        debug: Let an internal error raise, with its traceback.
 
     Returns:
-        The exit code: ``main_fn``'s (0 when it returns ``None``), 1 on a user error, 130 when
-        interrupted, 0 when the reader of the output went away (``| head``).
+        The exit code: ``main_fn``'s (0 when it returns ``None``), 1 on a user error, 70 on a
+        bug, 130 when interrupted, 0 when the reader of the output went away (``| head``).
     """
     shown = _Warnings()
+    debug = debug or os.environ.get(DEBUG_VARIABLE) == "1"
     with warnings.catch_warnings():
         warnings.simplefilter("always", UserWarning)  # every repair and lossy export, each time
         warnings.showwarning = shown.show
-        return _run(main_fn, name, shown)
+        return _run(main_fn, name, shown, debug)
 
 
-def _run(main_fn: Callable[[], int | None], name: str, shown: _Warnings) -> int:
+def _run(main_fn: Callable[[], int | None], name: str, shown: _Warnings, debug: bool) -> int:
     try:
         return int(main_fn() or 0)
     except RealisticIndoorError as e:
-        print(f"{name}: error: {e}", file=sys.stderr)
+        print(f"{name}: error: {_one_line(str(e))}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return 130
     except BrokenPipeError:
         # The reader of our output went away (e.g. `| head`): not an error of ours.
         sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - silence the interpreter's flush at exit
         return 0
+    except OSError as e:
+        if debug:
+            raise
+        print(f"{name}: error: {_os_error(e)}", file=sys.stderr)
+        return 1
+    except MemoryError:
+        if debug:
+            raise
+        print(f"{name}: error: out of memory; try a smaller plan, resolution or batch", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+    except Exception as e:
+        if debug:
+            raise
+        print(
+            f"{name}: internal error: {type(e).__name__}: {_one_line(str(e))} (a bug: please report it "
+            f"with the traceback that --debug or {DEBUG_VARIABLE}=1 shows)",
+            file=sys.stderr,
+        )
+        return INTERNAL_ERROR
     finally:
         shown.summarise()
+
+
+def _one_line(text: str) -> str:
+    """``text`` with its line breaks replaced, so that an error stays one line."""
+    return " ".join(text.split("\n")).strip() if "\n" in text else text
+
+
+def _os_error(e: OSError) -> str:
+    """An ``OSError`` as the user needs it: what could not be done to which file, and why."""
+    import errno
+
+    where = f" {e.filename}" if e.filename else ""
+    hint = {
+        errno.ENOSPC: "; free some space or write elsewhere",
+        errno.EACCES: "; check the permissions or write elsewhere",
+        errno.EROFS: "; write elsewhere",
+    }.get(e.errno or 0, "")
+    return f"cannot use{where}: {e.strerror or e}{hint}"
 
 
 class _Warnings:

@@ -15,6 +15,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from realistic_indoor.cli._outputs import add_overwrite_option, check_new_outputs, companions
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
 
 if TYPE_CHECKING:
@@ -29,7 +30,7 @@ Writer = Callable[["Building", Path], list[Path]]
 def add_output_options(
     parser: argparse.ArgumentParser, formats: Sequence[str], default_format: str | None, what: str
 ) -> None:
-    """Add ``-o``, ``--out-dir``, ``--format`` and ``--strict``.
+    """Add ``-o``, ``--out-dir``, ``--format``, ``--overwrite`` and ``--strict``.
 
     Args:
         parser: The subcommand's parser.
@@ -52,6 +53,7 @@ def add_output_options(
         default=default_format,
         help=f"ending of the files written with --out-dir{default}",
     )
+    add_overwrite_option(parser, f"{what}s")
     parser.add_argument(
         "--strict",
         action="store_true",
@@ -113,6 +115,8 @@ def run_batch(args: argparse.Namespace, write: Writer, verb: str) -> int:
     if not files:
         raise ConfigError(f"{args.plan}: no readable plans (plans end in .json or .xml)")
     targets = dict(zip(files, output_names(args.plan, files, out, "." + args.format), strict=True))
+    written = [c for t in targets.values() for c in companions(t)]
+    check_new_outputs(written, "--out-dir", overwrite=args.overwrite, inputs=files)
 
     def reader(path: Path) -> Building:
         return read_plan(path, strict=args.strict, infer_entrances=args.infer_entrances)

@@ -24,6 +24,7 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
     """Write the twins of every readable plan of ``args.like``; skip and count the others."""
     from tqdm import tqdm
 
+    from realistic_indoor.cli._outputs import check_new_outputs, companions
     from realistic_indoor.cli._world3d import save_options
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.files import check_output_dir
@@ -46,6 +47,9 @@ def run_like(args: argparse.Namespace, options: dict) -> int:
     files = plan_files(args.like)
     if not files:
         raise ConfigError(f"--like {args.like}: no plans there (plans end in .json or .xml)")
+    names = [f.stem if count == 1 else f"{f.stem}_{k}" for f in files for k in range(count)]
+    targets = [c for n in names for c in companions(out / f"{n}{ext}")]
+    check_new_outputs(targets, "--out-dir", overwrite=args.overwrite, inputs=[args.like, *files])
     batch = PlanBatch(files, strict=args.strict)
     plans = ((path.stem, b) for path, b in batch if _of_type(batch, path, b, args.type))
     twins = generate_like(plans, args.type, count, args.seed or 0, **options)

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from realistic_indoor.cli._batch import add_output_options, run_batch
+from realistic_indoor.cli._outputs import check_output
 from realistic_indoor.cli._plans import add_infer_entrances, load_plan
 from realistic_indoor.cli._world3d import add_world_options, save_options
 
@@ -52,7 +53,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("plan", help="input plan file; with --out-dir also a folder or a quoted glob")
     add_output_options(p, _endings(), None, "file")
     p.add_argument(
-        "--resolution", type=float, default=0.05, help="ROS map resolution, metres per pixel (default 0.05)"
+        "--resolution",
+        type=float,
+        default=0.05,
+        help="ROS map resolution, metres per pixel, 0.01 to 1 (default 0.05)",
     )
     add_world_options(p)
     add_infer_entrances(p)
@@ -61,8 +65,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read, write, and report the files written."""
+    from realistic_indoor.checks import require_between
     from realistic_indoor.errors import ConfigError
 
+    require_between("", "--resolution", args.resolution, 0.01, 1.0, "m")  # as ros_map.write's
     if args.out_dir:
         if args.format is not None:
             save_options(args, f"plan.{args.format}", args.resolution)
@@ -72,6 +78,7 @@ def run(args: argparse.Namespace) -> int:
     if args.format is not None:
         raise ConfigError("--format goes with --out-dir; with -o the output's ending picks the format")
     save_options(args, args.output, args.resolution)
+    check_output(args.output, "-o", overwrite=args.overwrite, inputs=[args.plan])
     b = load_plan(args)
     for path in _save(b, Path(args.output), args):
         print(f"wrote {path}")

@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from realistic_indoor.cli._like import add_like_options, run_like
+from realistic_indoor.cli._outputs import add_overwrite_option
 from realistic_indoor.cli._world3d import add_world_options, save_options
 
 
@@ -58,6 +59,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--height", type=int, help="random maps: grid height in 3 m cells (with --width)")
     add_like_options(p)
     add_world_options(p)
+    add_overwrite_option(p, "output files")
     p.set_defaults(func=run)
 
 
@@ -138,14 +140,18 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _check_outputs(args: argparse.Namespace) -> None:
-    """Refuse unwritable ``-o`` and ``--png`` paths before anything is generated."""
-    from realistic_indoor.files import check_output_path
+    """Refuse unwritable, existing (without ``--overwrite``) or input ``-o`` and ``--png`` paths first."""
+    from realistic_indoor.cli._outputs import check_output
+    from realistic_indoor.errors import ConfigError
 
+    inputs = [args.model] if args.model and args.model not in ("real", "paper") else []
     if args.output:
         save_options(args, args.output)
-        check_output_path(args.output, "-o")
+        check_output(args.output, "-o", overwrite=args.overwrite, inputs=inputs)
     if args.png:
-        check_output_path(args.png, "--png", (".png", ".svg"))
+        check_output(args.png, "--png", overwrite=args.overwrite, inputs=inputs, suffixes=(".png", ".svg"))
+    if args.output and args.png and Path(args.output).resolve() == Path(args.png).resolve():
+        raise ConfigError(f"-o and --png name the same file {args.output}; give them different names")
 
 
 def _one(gen, args: argparse.Namespace) -> int:
@@ -165,6 +171,7 @@ def _one(gen, args: argparse.Namespace) -> int:
 def _many(gen, args: argparse.Namespace) -> int:
     from tqdm import tqdm
 
+    from realistic_indoor.cli._outputs import check_new_outputs, companions
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.files import check_output_dir
     from realistic_indoor.generator import generate_from
@@ -178,8 +185,12 @@ def _many(gen, args: argparse.Namespace) -> int:
     first = args.seed if args.seed is not None else 0
     if first < 0:
         raise ConfigError(f"--seed must be a non-negative integer, not {first}")
+    seeds = range(first, first + args.count)
+    targets = [c for seed in seeds for c in companions(out / f"{args.type}_{seed}{ext}")]
+    inputs = [args.model] if args.model and args.model not in ("real", "paper") else []
+    check_new_outputs(targets, "--out-dir", overwrite=args.overwrite, inputs=inputs)
     written = 0
-    for seed in tqdm(range(first, first + args.count), desc=f"{args.type} buildings", unit="building"):
+    for seed in tqdm(seeds, desc=f"{args.type} buildings", unit="building"):
         written += len(save(generate_from(gen, seed), out / f"{args.type}_{seed}{ext}", **options))
     print(f"wrote {args.count} buildings ({written} files) to {out}")
     return 0

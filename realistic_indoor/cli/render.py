@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from realistic_indoor.cli._batch import add_output_options, run_batch
+from realistic_indoor.cli._outputs import check_output
 from realistic_indoor.cli._plans import add_infer_entrances, load_plan
 
 if TYPE_CHECKING:
@@ -77,6 +78,7 @@ def run(args: argparse.Namespace) -> int:
         raise ConfigError(
             f"{args.output}: render writes .png or .svg pictures (use convert for other formats)"
         )
+    check_output(args.output, "-o", overwrite=args.overwrite, inputs=[args.plan])
     b = load_plan(args)
     for path in _draw(b, Path(args.output), args):
         print(f"wrote {path}")

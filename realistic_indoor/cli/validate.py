@@ -4,7 +4,11 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 from typing import TYPE_CHECKING
+
+from realistic_indoor.cli._outputs import add_overwrite_option
+from realistic_indoor.errors import ConfigError
 
 if TYPE_CHECKING:
     from realistic_indoor.validator.compare import Comparison
@@ -59,6 +63,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="report format (default table)",
     )
     p.add_argument("-o", "--output", help="write the report to this file instead of the terminal")
+    add_overwrite_option(p, "the report and the figure")
     p.add_argument("--plot", metavar="OUT.png", help="also draw the comparison figure (PNG, SVG or PDF)")
     p.add_argument(
         "--infer-labels",
@@ -96,14 +101,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--seed", type=int, default=0, help="seed of the two-sample tests' cross-validation (default 0)"
     )
-    p.add_argument("--worst", type=int, default=3, help="worst deviations named per set (default 3)")
+    p.add_argument(
+        "--worst", type=int, default=3, help="worst deviations named per set, 0 to 100 (default 3)"
+    )
     p.add_argument("--quiet", action="store_true", help="no progress bars (they show only on a terminal)")
     p.set_defaults(func=run)
 
 
 def _names(args: argparse.Namespace) -> list[str | None]:
-    from realistic_indoor.errors import ConfigError
-
     if args.labels is None:
         return [None] * len(args.sets)
     names = [n.strip() for n in args.labels.split(",")]
@@ -117,9 +122,7 @@ def _names(args: argparse.Namespace) -> list[str | None]:
 
 def _reference(args: argparse.Namespace):
     import glob
-    from pathlib import Path
 
-    from realistic_indoor.errors import ConfigError
     from realistic_indoor.models.reference import REFERENCE_SETS
     from realistic_indoor.validator.plan_sets import load_plan_set, show_progress
 
@@ -135,7 +138,6 @@ def _reference(args: argparse.Namespace):
 
 
 def _feature_groups(text: str) -> tuple[str, ...]:
-    from realistic_indoor.errors import ConfigError
     from realistic_indoor.validator.two_sample import FEATURE_GROUPS
 
     groups = tuple(dict.fromkeys(g.strip() for g in text.split(",") if g.strip()))
@@ -148,18 +150,21 @@ def _feature_groups(text: str) -> tuple[str, ...]:
 
 
 def _check_arguments(args: argparse.Namespace) -> None:
-    """Refuse a bad ``--type`` and unwritable ``-o`` and ``--plot`` paths before the sets are read."""
-    from realistic_indoor.files import check_output_path
+    """Refuse a bad ``--type`` and unwritable, existing or input ``-o`` and ``--plot`` paths first."""
+    from realistic_indoor.cli._outputs import check_output
     from realistic_indoor.validator.compare import judged_type
     from realistic_indoor.validator.plot import PLOT_SUFFIXES
 
     if args.type is not None:
         judged_type(args.type)
     _feature_groups(args.two_sample_features)
+    inputs = [*args.sets, *([args.reference] if getattr(args, "reference", None) else [])]
     if args.output:
-        check_output_path(args.output, "-o")
+        check_output(args.output, "-o", overwrite=args.overwrite, inputs=inputs)
     if args.plot:
-        check_output_path(args.plot, "--plot", PLOT_SUFFIXES)
+        check_output(args.plot, "--plot", overwrite=args.overwrite, inputs=inputs, suffixes=PLOT_SUFFIXES)
+    if args.output and args.plot and Path(args.output).resolve() == Path(args.plot).resolve():
+        raise ConfigError(f"-o and --plot name the same file {args.output}; give them different names")
 
 
 def _skipped_line(comparison: Comparison) -> str | None:
@@ -175,11 +180,13 @@ def _skipped_line(comparison: Comparison) -> str | None:
 
 def run(args: argparse.Namespace) -> int:
     """Load the sets, compare them, print the report, draw the figure."""
+    from realistic_indoor.checks import require_int
     from realistic_indoor.files import write_text
     from realistic_indoor.validator.compare import compare_sets
     from realistic_indoor.validator.plan_sets import load_plan_set, show_progress
     from realistic_indoor.validator.report import render_comparison
 
+    require_int("", "--worst", args.worst, 0, 100)
     names = _names(args)
     _check_arguments(args)
     progress = show_progress(args.quiet)

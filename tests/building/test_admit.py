@@ -139,7 +139,7 @@ def test_load_sends_every_format_through_the_gate(tmp_path):
         load(_write(tmp_path / "nan.json", json.dumps(data)))
     data["rooms"] = []
     data["doors"] = []
-    with pytest.raises(PlanFormatError, match="no rooms"):
+    with pytest.raises(PlanFormatError, match="has no rooms"):
         load(_write(tmp_path / "empty.json", json.dumps(data)))
 
 

@@ -93,7 +93,10 @@ def test_check_output_path__refuses_folders_suffixes_and_files_in_the_way(tmp_pa
         (["generate", "--type", "random", "--width", "0", "--height", "9"], "--width counts 3 m grid cells"),
         (["validate", "{tmp}/none", "--plot", "{tmp}/out.bmp"], "--plot"),
         (["render", "{tmp}/plan.json", "-o", "{tmp}/x.png", "--size", "1000"], "exceeds the limit"),
-        (["convert", "{tmp}/plan.json", "-o", "{tmp}/x.yaml", "--resolution", "1e-5"], "exceeds the limit"),
+        (
+            ["convert", "{tmp}/plan.json", "-o", "{tmp}/x.yaml", "--resolution", "1e-5"],
+            "--resolution must be a finite number in [0.01, 1] m, got 1e-05",
+        ),
     ],
 )
 def test_cli__bad_output_is_one_line_before_any_work(tmp_path, capsys, building, argv, message):

@@ -7,7 +7,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
-from realistic_indoor.checks import require_int, require_range
+from realistic_indoor.checks import require_between, require_int
 from realistic_indoor.envs.actions import ACTION_TYPES
 from realistic_indoor.envs.macro import MacroConfig
 from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS, GlobalMapConfig
@@ -27,7 +27,11 @@ from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
 
-__all__ = ["TASK_FIELDS", "EnvConfig", "require_reset_options", "require_task_fields"]
+__all__ = ["MAX_STEPS", "TASK_FIELDS", "EnvConfig", "require_reset_options", "require_task_fields"]
+
+MAX_STEPS = 1_000_000
+"""Largest ``EnvConfig.max_steps``: more than 55 hours of robot time at 5 Hz; the presets give at
+most 15,000 steps to buildings of the default sizes."""
 
 TASK_FIELDS: dict[str, str] = {"victims": "search", "coverage_target": "explore"}
 """Fields of :class:`EnvConfig` that one task only uses: field name -> that task."""
@@ -77,7 +81,7 @@ class EnvConfig:
             episode, in ``(0, 1]``; exploration environments only (a search environment,
             which ends when every victim is found, refuses it).
         max_steps: Control steps after which an episode is truncated (``1 / robot.control_hz``
-            s each).
+            s each), an integer in [1, 1000000] (more than 55 hours of robot time at 5 Hz).
         action_type: ``"continuous"`` (``Box(-1, 1, (2,))``), ``"discrete"``
             (:data:`~realistic_indoor.envs.actions.DISCRETE_ACTIONS`), ``"frontier"``
             (``Discrete(macro.n_candidates)``: a candidate goal, driven to by the explorers'
@@ -115,8 +119,8 @@ class EnvConfig:
                 f"EnvConfig.action_type must be one of {', '.join(ACTION_TYPES)}, got {self.action_type!r}"
             )
         self._check_extra_observations()
-        require_range("EnvConfig", "coverage_target", self.coverage_target, 0.0, 1.0, "")
-        require_int("EnvConfig", "max_steps", self.max_steps, 1)
+        require_between("EnvConfig", "coverage_target", self.coverage_target, 0.0, 1.0, "", low_open=True)
+        require_int("EnvConfig", "max_steps", self.max_steps, 1, MAX_STEPS)
         self._check_types()
 
     @property

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from gymnasium import spaces
 
-from realistic_indoor.checks import require_int, require_positive
+from realistic_indoor.checks import require_between, require_int
 
 if TYPE_CHECKING:
     from realistic_indoor.envs.config import EnvConfig
@@ -41,16 +41,17 @@ class GlobalMapConfig:
     """The ``global_map`` observation: the robot's whole map around it, in a fixed orientation.
 
     Attributes:
-        size_px: Side of the image (pixels).
-        resolution_m: Side of a pixel (m); with the defaults the image covers 64 m x 64 m.
+        size_px: Side of the image (pixels), an integer in [8, 1024].
+        resolution_m: Side of a pixel (m), in [0.01, 5]; with the defaults the image covers
+            64 m x 64 m.
     """
 
     size_px: int = 128
     resolution_m: float = 0.5
 
     def __post_init__(self) -> None:
-        require_int("GlobalMapConfig", "size_px", self.size_px, 8)
-        require_positive("GlobalMapConfig", "resolution_m", self.resolution_m, "m")
+        require_int("GlobalMapConfig", "size_px", self.size_px, 8, 1024)
+        require_between("GlobalMapConfig", "resolution_m", self.resolution_m, 0.01, 5.0, "m")
 
 
 class GlobalMapObservation:

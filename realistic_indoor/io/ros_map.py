@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from realistic_indoor.checks import require_between
 from realistic_indoor.files import write_bytes, write_text
 from realistic_indoor.sim.raster import (
     DEFAULT_MARGIN_M,
@@ -84,16 +85,21 @@ def write(
     Args:
         building: The building.
         path: ``plan.yaml`` or ``plan.pgm``; both files are written.
-        resolution_m: Side of a pixel, metres (ROS's usual 0.05).
-        wall_thickness_m: Thickness of walls on the map, metres (never less than one pixel).
-        margin_m: Unknown border kept around the building, metres.
+        resolution_m: Side of a pixel, metres (ROS's usual 0.05), in [0.01, 1].
+        wall_thickness_m: Thickness of walls on the map, metres (never less than one pixel), in
+            [0, 1].
+        margin_m: Unknown border kept around the building, metres, in [0, 10].
 
     Returns:
         ``[image path, yaml path]``.
 
     Raises:
-        ConfigError: If a size is out of range or the building has no room.
+        ConfigError: If a size is out of range (one line naming it and its range) or the
+            building has no room.
     """
+    require_between("ros_map", "resolution_m", resolution_m, 0.01, 1.0, "m")
+    require_between("ros_map", "wall_thickness_m", wall_thickness_m, 0.0, 1.0, "m")
+    require_between("ros_map", "margin_m", margin_m, 0.0, 10.0, "m")
     path = Path(path)
     raster = rasterize(
         building, resolution_m=resolution_m, wall_thickness_m=wall_thickness_m, margin_m=margin_m

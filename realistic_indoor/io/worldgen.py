@@ -29,6 +29,7 @@ import numpy as np
 
 from realistic_indoor.building import Building, Door, Room, SemanticLabel
 from realistic_indoor.building.admit import MAX_SPAN_M
+from realistic_indoor.checks import require_between
 from realistic_indoor.errors import ConfigError, PlanFormatError
 from realistic_indoor.files import atomic_path
 from realistic_indoor.io.floorplan.xmlfile import parse_root
@@ -97,8 +98,8 @@ def read(
         path: The world file.
         modules: Sizes of modules other than the stock ones and this package's own: the path of
             the tool's ``rooms.xml`` or a mapping ``{file: (depth, width)}`` in cells.
-        grid_m: Side of a cell (m).
-        door_width_m: Width given to every door (the format has none).
+        grid_m: Side of a cell (m), in [1, 10].
+        door_width_m: Width given to every door (the format has none), in [0.6, 3] m.
         building_type: The building type to record (the format has none).
 
     Returns:
@@ -108,10 +109,13 @@ def read(
         ``metadata`` holds ``source``, ``name`` (the world's) and ``grid_m``.
 
     Raises:
+        ConfigError: If ``grid_m`` or ``door_width_m`` is out of its range.
         PlanFormatError: If the file is missing or malformed, the world is larger than
             :data:`~realistic_indoor.building.admit.MAX_SPAN_M` a side, a module is unknown, a room leaves
             the world or overlaps another, or a door touches no room.
     """
+    require_between("worldgen.read", "grid_m", grid_m, 1.0, 10.0, "m")
+    require_between("worldgen.read", "door_width_m", door_width_m, 0.6, 3.0, "m")
     source, path = str(path), Path(path)
     sizes = _module_table(modules, path)
     root = parse_root(path)
@@ -316,15 +320,17 @@ def write(
     Args:
         building: The building.
         path: The file to write (``.wg.xml``).
-        grid_m: Side of a cell (m).
+        grid_m: Side of a cell (m), in [1, 10].
         strict: Raise instead of warning when anything is lost.
 
     Returns:
         ``[path]``.
 
     Raises:
-        ConfigError: If the building has no rooms, or ``strict`` and something would be lost.
+        ConfigError: If ``grid_m`` is out of its range, the building has no rooms, or ``strict``
+            and something would be lost.
     """
+    require_between("worldgen.write", "grid_m", grid_m, 1.0, 10.0, "m")
     if not building.rooms:
         raise ConfigError("cannot write a building without rooms")
     path = Path(path)

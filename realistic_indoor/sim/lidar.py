@@ -9,7 +9,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from realistic_indoor.checks import require_int, require_positive, require_range
+from realistic_indoor.checks import require_between, require_int
 from realistic_indoor.sim.raster import RASTER_WALL
 from realistic_indoor.sim.raycast import Raycaster, RayHits
 
@@ -20,13 +20,19 @@ __all__ = ["Lidar", "LidarConfig", "Scan", "beam_offsets"]
 class LidarConfig:
     """Laser scanner settings.
 
+    Every field has a plausible range, checked on construction; a value outside it raises a
+    one-line ``ConfigError``.
+
     Attributes:
         fov_rad: Field of view (rad), in (0, 2 pi]; beams are spread evenly from ``-fov/2`` to
             ``+fov/2`` about the heading, both ends included (a full circle has no duplicate).
-        n_beams: Number of beams, >= 1. The default 109 gives a beam every 2.5 degrees over 270
-            degrees and one straight ahead.
-        max_range_m: Readings stop at this range (m), > 0; a beam with no return reads it.
-        noise_std_m: Standard deviation of the Gaussian noise added to returned ranges (m), >= 0.
+        n_beams: Number of beams, an integer in [1, 3600] (3600: one every 0.1 degree over a
+            full circle). The default 109 gives a beam every 2.5 degrees over 270 degrees and
+            one straight ahead.
+        max_range_m: Readings stop at this range (m), in [0.1, 100]; a beam with no return
+            reads it.
+        noise_std_m: Standard deviation of the Gaussian noise added to returned ranges (m), in
+            [0, 1].
     """
 
     fov_rad: float = math.radians(270.0)
@@ -35,10 +41,10 @@ class LidarConfig:
     noise_std_m: float = 0.01
 
     def __post_init__(self) -> None:
-        require_range("LidarConfig", "fov_rad", self.fov_rad, 0.0, 2 * math.pi, "rad")
-        require_int("LidarConfig", "n_beams", self.n_beams, 1)
-        require_positive("LidarConfig", "max_range_m", self.max_range_m, "m")
-        require_positive("LidarConfig", "noise_std_m", self.noise_std_m, "m", allow_zero=True)
+        require_between("LidarConfig", "fov_rad", self.fov_rad, 0.0, 2 * math.pi, "rad", low_open=True)
+        require_int("LidarConfig", "n_beams", self.n_beams, 1, 3600)
+        require_between("LidarConfig", "max_range_m", self.max_range_m, 0.1, 100.0, "m")
+        require_between("LidarConfig", "noise_std_m", self.noise_std_m, 0.0, 1.0, "m")
 
 
 def beam_offsets(config: LidarConfig) -> np.ndarray:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from realistic_indoor.checks import require_int, require_positive
+from realistic_indoor.checks import require_between, require_int, require_positive
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim._map_kernels import (
     MAPPED_FREE,
@@ -85,17 +85,18 @@ class LocalMapConfig:
     """The egocentric local map: a square image of the robot's map around the robot.
 
     Attributes:
-        size_px: Side of the image (pixels); 64 suits stable-baselines3's ``CnnPolicy``.
-        resolution_m: Side of a pixel (m). Coarser than the map, each pixel shows the map cells
-            it covers, walls first (a 5 cm wall never vanishes from a 20 cm pixel).
+        size_px: Side of the image (pixels), an integer in [1, 1024]; 64 suits
+            stable-baselines3's ``CnnPolicy``.
+        resolution_m: Side of a pixel (m), in [0.01, 2]. Coarser than the map, each pixel shows
+            the map cells it covers, walls first (a 5 cm wall never vanishes from a 20 cm pixel).
     """
 
     size_px: int = 64
     resolution_m: float = 0.2
 
     def __post_init__(self) -> None:
-        require_int("LocalMapConfig", "size_px", self.size_px, 1)
-        require_positive("LocalMapConfig", "resolution_m", self.resolution_m, "m")
+        require_int("LocalMapConfig", "size_px", self.size_px, 1, 1024)
+        require_between("LocalMapConfig", "resolution_m", self.resolution_m, 0.01, 2.0, "m")
 
 
 class RobotMap:

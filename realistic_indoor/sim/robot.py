@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import pymunk
 
-from realistic_indoor.checks import require_int, require_positive
+from realistic_indoor.checks import require_between, require_int
 from realistic_indoor.errors import ConfigError
 
 if TYPE_CHECKING:
@@ -30,20 +30,36 @@ _COLLISION_BIAS = 1e-6
 """Share of an overlap pymunk leaves after one second: a robot that touched a wall is pushed
 clear within a few sub-steps (pymunk's default leaves 0.2 %)."""
 
+_ROBOT_BOUNDS = (
+    ("radius_m", 0.05, 2.0, "m"),
+    ("max_speed_m_s", 0.05, 5.0, "m/s"),
+    ("max_turn_rate_rad_s", 0.1, 10.0, "rad/s"),
+    ("max_accel_m_s2", 0.1, 10.0, "m/s2"),
+    ("max_angular_accel_rad_s2", 0.1, 50.0, "rad/s2"),
+    ("control_hz", 1.0, 100.0, "Hz"),
+)
+"""Plausible range of each physical setting of :class:`RobotConfig`: field, low, high, unit."""
+
 
 @dataclass(frozen=True)
 class RobotConfig:
     """The robot's body, limits and control rate.
 
+    Every field has a plausible range, checked on construction (a robot of radius 100 m is
+    refused, not simulated); a value outside it raises a one-line ``ConfigError``.
+
     Attributes:
-        radius_m: Radius of the disc (m); 0.25 m is a small search robot.
-        max_speed_m_s: Largest forward or backward speed (m/s).
-        max_turn_rate_rad_s: Largest turning rate (rad/s).
-        max_accel_m_s2: Largest change of speed per second (m/s2).
-        max_angular_accel_rad_s2: Largest change of turning rate per second (rad/s2).
-        control_hz: Commands per second; one :meth:`Robot.step` lasts ``1 / control_hz`` s.
-        substeps: Physics steps per control step. A sub-step must not move the robot more than
-            half its radius (no tunnelling through walls); the config checks it.
+        radius_m: Radius of the disc (m), in [0.05, 2]; 0.25 m is a small search robot.
+        max_speed_m_s: Largest forward or backward speed (m/s), in [0.05, 5].
+        max_turn_rate_rad_s: Largest turning rate (rad/s), in [0.1, 10].
+        max_accel_m_s2: Largest change of speed per second (m/s2), in [0.1, 10].
+        max_angular_accel_rad_s2: Largest change of turning rate per second (rad/s2), in
+            [0.1, 50].
+        control_hz: Commands per second (Hz), in [1, 100]; one :meth:`Robot.step` lasts
+            ``1 / control_hz`` s.
+        substeps: Physics steps per control step, an integer in [1, 1000]. A sub-step must not
+            move the robot more than half its radius (no tunnelling through walls); the config
+            checks it.
         physics: ``"compiled"`` (default) or ``"pymunk"``, see :data:`PHYSICS`. Both move the
             robot the same way, to within millimetres where it touches two walls at once.
     """
@@ -62,16 +78,9 @@ class RobotConfig:
             raise ConfigError(
                 f"RobotConfig.physics must be one of {', '.join(PHYSICS)}, got {self.physics!r}"
             )
-        for name, unit in (
-            ("radius_m", "m"),
-            ("max_speed_m_s", "m/s"),
-            ("max_turn_rate_rad_s", "rad/s"),
-            ("max_accel_m_s2", "m/s2"),
-            ("max_angular_accel_rad_s2", "rad/s2"),
-            ("control_hz", "Hz"),
-        ):
-            require_positive("RobotConfig", name, getattr(self, name), unit)
-        require_int("RobotConfig", "substeps", self.substeps, 1)
+        for name, low, high, unit in _ROBOT_BOUNDS:
+            require_between("RobotConfig", name, getattr(self, name), low, high, unit)
+        require_int("RobotConfig", "substeps", self.substeps, 1, 1000)
         travel = self.max_speed_m_s / (self.control_hz * self.substeps)
         if travel > self.radius_m / 2:
             need = math.ceil(2 * self.max_speed_m_s / (self.control_hz * self.radius_m))

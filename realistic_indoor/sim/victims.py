@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from realistic_indoor.building.labels import ROOM_LABELS, SemanticLabel, parse_label
-from realistic_indoor.checks import require_int, require_positive, require_range
+from realistic_indoor.checks import require_between, require_int
 from realistic_indoor.errors import ConfigError
 
 if TYPE_CHECKING:
@@ -29,15 +29,19 @@ _TRIES = 20
 class VictimConfig:
     """Where victims go and how they are sensed.
 
+    The numbers have plausible ranges, checked on construction; a value outside one raises a
+    one-line ``ConfigError``.
+
     Attributes:
-        n_victims: Number of victims, >= 1.
+        n_victims: Number of victims, an integer in [1, 1000].
         labels: Semantic labels of the rooms victims may be in; by default the ordinary rooms
             (small, medium, big), not corridors or halls.
         functions: Functional labels allowed (``"office"``, ``"classroom"``, ...); ``None``
             allows any.
-        min_clearance_m: Least distance from a victim to any wall (m).
-        sensor_range_m: Victims farther than this are not seen (m).
-        sensor_fov_rad: Field of view of the victim sensor, centred on the heading (rad).
+        min_clearance_m: Least distance from a victim to any wall (m), in [0, 5].
+        sensor_range_m: Victims farther than this are not seen (m), in [0.1, 50].
+        sensor_fov_rad: Field of view of the victim sensor, centred on the heading (rad), in
+            (0, 2 pi].
     """
 
     n_victims: int = 3
@@ -48,15 +52,17 @@ class VictimConfig:
     sensor_fov_rad: float = math.radians(120.0)
 
     def __post_init__(self) -> None:
-        require_int("VictimConfig", "n_victims", self.n_victims, 1)
+        require_int("VictimConfig", "n_victims", self.n_victims, 1, 1000)
         object.__setattr__(self, "labels", tuple(parse_label(lab) for lab in self.labels))
         if not self.labels:
             raise ConfigError("VictimConfig.labels must name at least one room label")
         if self.functions is not None:
             object.__setattr__(self, "functions", tuple(f.strip().lower() for f in self.functions))
-        require_positive("VictimConfig", "min_clearance_m", self.min_clearance_m, "m", allow_zero=True)
-        require_positive("VictimConfig", "sensor_range_m", self.sensor_range_m, "m")
-        require_range("VictimConfig", "sensor_fov_rad", self.sensor_fov_rad, 0.0, 2 * math.pi, "rad")
+        require_between("VictimConfig", "min_clearance_m", self.min_clearance_m, 0.0, 5.0, "m")
+        require_between("VictimConfig", "sensor_range_m", self.sensor_range_m, 0.1, 50.0, "m")
+        require_between(
+            "VictimConfig", "sensor_fov_rad", self.sensor_fov_rad, 0.0, 2 * math.pi, "rad", low_open=True
+        )
 
     def accepts(self, room: Room) -> bool:
         """Whether victims may be placed in ``room``."""

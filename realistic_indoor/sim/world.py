@@ -10,7 +10,7 @@ import numpy as np
 
 from realistic_indoor.building.building import Building
 from realistic_indoor.building.labels import SemanticLabel
-from realistic_indoor.checks import require_positive
+from realistic_indoor.checks import require_between
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim._world_kernels import clear_at_least, reachable_from
 from realistic_indoor.sim.raster import (
@@ -37,12 +37,17 @@ _ENTRANCE_DEPTHS_M = np.arange(0.3, 3.0, 0.05)
 class WorldConfig:
     """How a building becomes a world.
 
+    Every field has a plausible range, checked on construction; a value outside it raises a
+    one-line ``ConfigError``.
+
     Attributes:
-        resolution_m: Side of a raster cell (m); the robot's map has the same cells.
-        wall_thickness_m: Thickness of the walls in the raster and in the physics (m).
-        margin_m: Outside band kept around the building in the raster (m).
-        start_clearance_m: Least distance from the start position to any wall (m); must exceed
-            the robot's radius.
+        resolution_m: Side of a raster cell (m), in [0.01, 1]; the robot's map has the same
+            cells.
+        wall_thickness_m: Thickness of the walls in the raster and in the physics (m), in
+            [0, 1]; thinner than a cell, a wall is one cell wide.
+        margin_m: Outside band kept around the building in the raster (m), in [0, 10].
+        start_clearance_m: Least distance from the start position to any wall (m), in
+            [0.05, 3]; must exceed the robot's radius.
     """
 
     resolution_m: float = DEFAULT_RESOLUTION_M
@@ -51,10 +56,10 @@ class WorldConfig:
     start_clearance_m: float = 0.4
 
     def __post_init__(self) -> None:
-        require_positive("WorldConfig", "resolution_m", self.resolution_m, "m")
-        require_positive("WorldConfig", "wall_thickness_m", self.wall_thickness_m, "m", allow_zero=True)
-        require_positive("WorldConfig", "margin_m", self.margin_m, "m", allow_zero=True)
-        require_positive("WorldConfig", "start_clearance_m", self.start_clearance_m, "m")
+        require_between("WorldConfig", "resolution_m", self.resolution_m, 0.01, 1.0, "m")
+        require_between("WorldConfig", "wall_thickness_m", self.wall_thickness_m, 0.0, 1.0, "m")
+        require_between("WorldConfig", "margin_m", self.margin_m, 0.0, 10.0, "m")
+        require_between("WorldConfig", "start_clearance_m", self.start_clearance_m, 0.05, 3.0, "m")
 
 
 class World:

@@ -268,11 +268,15 @@ def test_vector_env__reset_mask_starts_only_the_masked_sub_envs_as_the_single_en
             )
 
 
-def test_vector_env__a_step_limit_beyond_int64_never_truncates():
-    envs = _make(n=2, max_steps=2**70)
+def test_vector_env__the_largest_step_limit_never_truncates_and_one_beyond_int64_is_refused():
+    from realistic_indoor.envs.config import MAX_STEPS
+
+    envs = _make(n=2, max_steps=MAX_STEPS)
     envs.reset(seed=0)
     _, _, _, truncated, _ = envs.step(np.zeros((2, 2), np.float32))
     assert not truncated.any()
+    with pytest.raises(ConfigError, match=r"EnvConfig.max_steps must be an integer in \[1, 1000000\]"):
+        _make(n=2, max_steps=2**70)
 
 
 def test_vector_env__refuses_bad_reset_options():

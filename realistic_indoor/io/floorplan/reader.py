@@ -15,6 +15,7 @@ from realistic_indoor.building import Building, BuildingType, Door, Room, Semant
 from realistic_indoor.building.check import WALL_TOLERANCE_M
 from realistic_indoor.building.door import DEFAULT_DOOR_WIDTH_M
 from realistic_indoor.building.labels import normalise_function
+from realistic_indoor.checks import require_between
 from realistic_indoor.errors import ConfigError, PlanFormatError
 from realistic_indoor.io.floorplan.consistency import (
     REACH_M,
@@ -81,7 +82,9 @@ def read(
         path: The file.
         label_map: Changes to the functional -> semantic label table (a mapping or a JSON file,
             see :func:`realistic_indoor.io.function_labels.load_label_map`).
-        door_width_m: Width of a door whose portal segment has no length (m).
+        door_width_m: Width of a door whose portal segment has no length (m), in [0.6, 3]
+            (0.6 m is the narrowest door :func:`~realistic_indoor.building.check_building`
+            accepts).
         infer_entrances: Add exterior doors (the files have none): one per ``entrance`` space on
             the building's outer wall, else one for the largest hall or lobby, else for the
             largest corridor, else for the largest room. Recorded in
@@ -110,8 +113,7 @@ def read(
         ConfigError: If ``label_map`` or ``door_width_m`` is invalid.
     """
     source, path = str(path), Path(path)
-    if not door_width_m > 0:
-        raise ConfigError(f"door_width_m must be positive, not {door_width_m}")
+    require_between("floorplan.read", "door_width_m", door_width_m, 0.6, 3.0, "m")
     labels = load_label_map(label_map)
     root = parse_root(path)
     if root.tag != "building":

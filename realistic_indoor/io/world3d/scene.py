@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from realistic_indoor.checks import require_positive
+from realistic_indoor.checks import require_between
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import write_bytes, write_text
 from realistic_indoor.sim.raster import DEFAULT_WALL_THICKNESS_M  # as the simulator and ROS map draw walls
@@ -53,14 +53,19 @@ DEFAULT_DOOR_HEIGHT_M = 2.1
 class WorldOptions:
     """How a plan becomes a 3D world.
 
+    The sizes have plausible ranges, checked on construction; a value outside one raises a
+    one-line ``ConfigError``.
+
     Attributes:
-        wall_height_m: Height of the walls above the floor (m), > 0.
-        wall_thickness_m: Thickness of the walls (m), > 0. Plans have no wall thickness: each
-            wall box is centred on its segment, half on either side of the boundary the rooms
-            share (rooms lose ``wall_thickness_m / 2`` of floor along each wall).
-        door_height_m: Height of the doorways (m), > 0 and at most ``wall_height_m``; a lintel
-            box fills the wall above each doorway. Equal to ``wall_height_m``: no lintels.
-            ``None`` (the default): 2.1 m, or the wall height if the walls are lower.
+        wall_height_m: Height of the walls above the floor (m), in [0.1, 10] (low walls suffice
+            for a 2D laser; 10 m is a sports hall).
+        wall_thickness_m: Thickness of the walls (m), in [0.01, 1]. Plans have no wall
+            thickness: each wall box is centred on its segment, half on either side of the
+            boundary the rooms share (rooms lose ``wall_thickness_m / 2`` of floor along each
+            wall).
+        door_height_m: Height of the doorways (m), in [0.1, 10] and at most ``wall_height_m``; a
+            lintel box fills the wall above each doorway. Equal to ``wall_height_m``: no
+            lintels. ``None`` (the default): 2.1 m, or the wall height if the walls are lower.
         exterior_doors_open: Whether entrances are open gaps (the default, as in the plan and
             the simulator) or closed by a door leaf, a box as thick as the walls filling the
             doorway up to ``door_height_m``.
@@ -72,11 +77,11 @@ class WorldOptions:
     exterior_doors_open: bool = True
 
     def __post_init__(self) -> None:
-        require_positive("WorldOptions", "wall_height_m", self.wall_height_m, "m")
-        require_positive("WorldOptions", "wall_thickness_m", self.wall_thickness_m, "m")
+        require_between("WorldOptions", "wall_height_m", self.wall_height_m, 0.1, 10.0, "m")
+        require_between("WorldOptions", "wall_thickness_m", self.wall_thickness_m, 0.01, 1.0, "m")
         if self.door_height_m is None:
             object.__setattr__(self, "door_height_m", min(DEFAULT_DOOR_HEIGHT_M, self.wall_height_m))
-        require_positive("WorldOptions", "door_height_m", self.door_height_m, "m")
+        require_between("WorldOptions", "door_height_m", self.door_height_m, 0.1, 10.0, "m")
         if self.door_height_m > self.wall_height_m:
             raise ConfigError(
                 f"WorldOptions.door_height_m must be at most wall_height_m ({self.wall_height_m!r} m), "

@@ -50,10 +50,11 @@ def test_convert__ros_map_takes_the_wall_thickness(plan_json, tmp_path):
 @pytest.mark.parametrize(
     ("flags", "words"),
     [
-        (["--wall-height", "0"], ["--wall-height must be a finite number > 0 m, got 0.0"]),
+        (["--wall-height", "0"], ["--wall-height must be a finite number in [0.1, 10] m, got 0.0"]),
         (["--wall-height", "-2"], ["--wall-height must be"]),
         (["--door-height", "3"], ["--door-height must be at most --wall-height"]),
         (["--wall-thickness", "0"], ["--wall-thickness must be"]),
+        (["--wall-thickness", "100"], ["--wall-thickness must be a finite number in [0.01, 1] m, got 100.0"]),
     ],
 )
 def test_convert__bad_options_are_one_line_errors(plan_json, tmp_path, capsys, flags, words):

@@ -59,10 +59,10 @@ def test_boxes__lintels_over_every_door_and_closed_entrances(slanted):
 @pytest.mark.parametrize(
     ("fields", "message"),
     [
-        ({"wall_height_m": 0.0}, "wall_height_m must be a finite number > 0 m, got 0.0"),
-        ({"wall_height_m": -2.5}, "wall_height_m must be a finite number > 0 m"),
-        ({"wall_height_m": math.nan}, "wall_height_m must be a finite number > 0 m"),
-        ({"wall_thickness_m": 0}, "wall_thickness_m must be a finite number > 0 m"),
+        ({"wall_height_m": 0.0}, r"wall_height_m must be a finite number in \[0.1, 10\] m, got 0.0"),
+        ({"wall_height_m": -2.5}, r"wall_height_m must be a finite number in \[0.1, 10\] m"),
+        ({"wall_height_m": math.nan}, r"wall_height_m must be a finite number in \[0.1, 10\] m"),
+        ({"wall_thickness_m": 0}, r"wall_thickness_m must be a finite number in \[0.01, 1\] m"),
         ({"door_height_m": 3.0}, "door_height_m must be at most wall_height_m"),
         ({"exterior_doors_open": "no"}, "exterior_doors_open must be True or False"),
     ],
@@ -74,7 +74,7 @@ def test_options__bad_values_are_config_errors(fields, message):
 
 @pytest.mark.parametrize("ending", ENDINGS)
 def test_save__non_positive_wall_height_is_config_error_and_writes_nothing(tiny_office, tmp_path, ending):
-    with pytest.raises(ConfigError, match="wall_height_m must be a finite number > 0 m, got -1"):
+    with pytest.raises(ConfigError, match=r"wall_height_m must be a finite number in \[0.1, 10\] m, got -1"):
         save(tiny_office, tmp_path / f"plan.{ending}", wall_height_m=-1)
     assert list(tmp_path.iterdir()) == []
 

@@ -83,8 +83,10 @@ def make_agent(name: str, env: Any, **options: Any) -> Agent:
     """
     from realistic_indoor.agents.base import RobotSpec
 
-    key, _, argument = str(name).strip().partition(":")
+    key, colon, argument = str(name).strip().partition(":")
     key = key.lower()
+    if colon and not argument.strip():
+        raise ConfigError(f"agent {name!r}: nothing after ':'; give a model file ({key}:<path/to/model.zip>)")
     if key not in AGENTS:
         raise ConfigError(f"unknown agent {name!r}; valid: {', '.join(AGENTS)} (ppo as ppo:<model.zip>)")
     if key == "ppo":

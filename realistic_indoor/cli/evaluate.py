@@ -94,6 +94,9 @@ def run(args: argparse.Namespace) -> int:
 
     agents = [a.strip() for a in args.agents.split(",") if a.strip()]
     envs = [e.strip() for e in args.envs.split(",") if e.strip()]
+    for option, names in (("--agents", agents), ("--envs", envs)):
+        if not names:
+            raise ConfigError(f"{option} names nothing; give one or more names, comma-separated")
     kwargs = _env_kwargs(args.env_kwargs)
     if args.max_steps is not None:
         kwargs["max_steps"] = args.max_steps

@@ -114,10 +114,14 @@ def _read_model(path: Path):
         return BuildingTypeModel.from_dict(json.loads(path.read_text(encoding="utf-8")))
     except OSError as e:
         raise ConfigError(f"{path}: cannot read the model ({e.strerror or e})") from None
-    except json.JSONDecodeError as e:
+    except UnicodeDecodeError:
+        raise ConfigError(f"{path}: the model is not UTF-8 text; a model is a JSON file") from None
+    except (json.JSONDecodeError, RecursionError) as e:
         raise ConfigError(f"{path}: the model is not valid JSON ({e})") from None
-    except ConfigError as e:
-        raise ConfigError(f"{path}: {e}") from None
+    except ValueError as e:
+        if isinstance(e, ConfigError):
+            raise ConfigError(f"{path}: {e}") from None
+        raise ConfigError(f"{path}: the model holds an invalid number ({e})") from None
 
 
 def run(args: argparse.Namespace) -> int:

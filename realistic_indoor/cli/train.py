@@ -130,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
     env_ids = env_ids_of(args.envs)
     config = _learned_config(args, env_ids) if learned else _config(args, env_ids)
     plan = _eval_plan(args)
-    eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs else config.env_ids
+    eval_ids = env_ids_of(args.eval_envs, "--eval-envs") if args.eval_envs is not None else config.env_ids
     model_path = _model_path(args, env_ids)
     eval_dir = _eval_dir(args, model_path) if plan.episodes else None
     if not args.no_train:

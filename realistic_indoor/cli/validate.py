@@ -155,6 +155,8 @@ def _check_arguments(args: argparse.Namespace) -> None:
     from realistic_indoor.validator.compare import judged_type
     from realistic_indoor.validator.plot import PLOT_SUFFIXES
 
+    if args.seed < 0:
+        raise ConfigError(f"--seed must be an integer >= 0, got {args.seed}")
     if args.type is not None:
         judged_type(args.type)
     _feature_groups(args.two_sample_features)

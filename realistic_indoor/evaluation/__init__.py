@@ -168,8 +168,10 @@ def run_evaluation(
             runs), or an episode log in ``out_dir`` written with other settings (``resume``).
         PlanFormatError: Under ``strict``, for the first plan that cannot be read.
     """
+    from realistic_indoor.evaluation.runner import check_run_options
     from realistic_indoor.files import check_output_dir
 
+    check_run_options(workers, use_ray)
     if out_dir is not None:
         check_output_dir(out_dir, "output folder")
     specs = [e for e in envs if isinstance(e, EnvSpec)]

@@ -102,6 +102,8 @@ class EpisodeLog:
     def __init__(self, out_dir: str | Path, append: bool = False) -> None:
         self.path = Path(out_dir) / LOG_NAME
         self.path.parent.mkdir(parents=True, exist_ok=True)
+        if not append and self.path.is_symlink():
+            self.path.unlink()  # a new log replaces the link, never the file it points to
         if append and _ends_torn(self.path):
             with self.path.open("a", encoding="utf-8") as f:
                 f.write("\n")  # end a line torn by an interrupt, so the next record starts clean
@@ -151,12 +153,19 @@ def finished_episodes(out_dir: str | Path, tasks: Sequence[EpisodeTask]) -> dict
         return {}
     by_key = {task_key(t): i for i, t in enumerate(tasks)}
     done: dict[int, EpisodeResult] = {}
-    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        raise ConfigError(
+            f"{path}: not an episode log (not UTF-8 text); add --overwrite to replace it or choose "
+            "another --out folder"
+        ) from None
+    for number, line in enumerate(text.splitlines(), 1):
         record = _parse_line(line)
         if record is None:
             continue
         old, result = record
-        i = by_key.get((old["agent"], old["env"], old["seed"]))
+        i = by_key.get((old.get("agent"), old.get("env"), old.get("seed")))
         if i is None:
             continue
         _check_same_settings(old, _task_record(tasks[i]), path, number)
@@ -184,9 +193,10 @@ def _parse_line(line: str) -> tuple[dict[str, Any], EpisodeResult] | None:
     """A log line's task and result, or ``None`` for a blank or torn line."""
     try:
         data = json.loads(line)
-        return data["task"], EpisodeResult.from_dict(_unplain(data["result"]))
-    except (ValueError, KeyError, TypeError):
+        task, result = data["task"], EpisodeResult.from_dict(_unplain(data["result"]))
+    except (ValueError, KeyError, TypeError, AttributeError, RecursionError):
         return None
+    return (task, result) if isinstance(task, dict) else None
 
 
 def _check_same_settings(old: dict[str, Any], new: dict[str, Any], path: Path, line: int) -> None:

@@ -51,6 +51,7 @@ def run_tasks(
         KeyboardInterrupt: When interrupted; worker processes are stopped first, and every
             episode finished before has been passed to ``on_result``.
     """
+    check_run_options(workers, use_ray)
     if check:
         check_tasks(tasks)
     if not tasks:
@@ -59,8 +60,6 @@ def run_tasks(
     if use_ray:
         return _run_ray(tasks, ray_address, progress, done)
     workers = (os.cpu_count() or 1) if workers is None else workers
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        raise ConfigError(f"workers must be an integer >= 1, got {workers!r}")
     bar = _progress(len(tasks), progress)
     try:
         if workers == 1 or len(tasks) == 1:
@@ -142,6 +141,24 @@ def _stop(pool: ProcessPoolExecutor) -> None:
             process.terminate()
     for process in processes:
         process.join(timeout=5)
+
+
+def check_run_options(workers: int | None, use_ray: bool) -> None:
+    """Refuse a bad worker count, or Ray when it is not installed, before anything runs or is written.
+
+    Raises:
+        ConfigError: If ``workers`` is not ``None`` or an integer >= 1, or ``use_ray`` without
+            the ray package.
+    """
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise ConfigError(f"workers must be an integer >= 1, got {workers!r}")
+    if use_ray:
+        import importlib.util
+
+        if importlib.util.find_spec("ray") is None:
+            raise ConfigError(
+                "--ray needs the ray package: pip install ray (or leave out --ray to use local processes)"
+            )
 
 
 def _run_ray(

@@ -96,9 +96,11 @@ def parse_envs(tokens: list[str], kwargs: dict[str, Any] | None = None) -> list[
 
     specs = []
     for token in tokens:
-        env_id, _, plan = token.strip().partition(":")
+        env_id, colon, plan = token.strip().partition(":")
         if env_id not in PRESETS:
             raise ConfigError(f"unknown environment id {env_id!r}; registered: {', '.join(PRESETS)}")
+        if colon and not plan.strip():
+            raise ConfigError(f"{token!r}: nothing after ':'; give a plan file or folder ({env_id}:<plan>)")
         if not plan:
             specs.append(EnvSpec(env_id, None, dict(kwargs or {})))
             continue
@@ -181,6 +183,10 @@ def make_tasks(
         raise ConfigError("an evaluation needs at least one agent and one environment")
     if isinstance(episodes, bool) or not isinstance(episodes, int) or episodes < 1:
         raise ConfigError(f"episodes must be an integer >= 1, got {episodes!r}")
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        raise ConfigError(
+            f"seed must be an integer >= 0 (environments take non-negative seeds), got {seed!r}"
+        )
     return [EpisodeTask(a, e, seed + i, **options) for a in agents for e in envs for i in range(episodes)]
 
 

@@ -91,6 +91,8 @@ def loads(text: str, source: str = "<string>") -> Building:
         raise PlanFormatError(source, f"malformed JSON: {e}") from None
     except RecursionError:
         raise PlanFormatError(source, "malformed JSON: nested too deeply to be a building file") from None
+    except ValueError as e:  # e.g. an integer of more digits than Python converts
+        raise PlanFormatError(source, f"malformed JSON: {e}") from None
     return from_dict(data, source)
 
 

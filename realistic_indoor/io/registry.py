@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import importlib
+import inspect
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.building.admit import admit_building
-from realistic_indoor.errors import PlanFormatError, RealisticIndoorError
+from realistic_indoor.errors import ConfigError, PlanFormatError, RealisticIndoorError
 from realistic_indoor.files import check_output_path
 
 if TYPE_CHECKING:
@@ -94,7 +95,16 @@ def load(path: str | Path, fmt: str | None = None, *, strict: bool = False, **op
         )
     if strict and fmt == "floorplan":
         options["strict"] = True
-    return admit_building(_module(fmt).read(path, **options), path, strict=strict)
+    reader = _module(fmt).read
+    try:
+        inspect.signature(reader).bind(path, **options)
+    except TypeError:
+        known = [k for k in inspect.signature(reader).parameters if k != "path"]
+        raise ConfigError(
+            f"{fmt} plans take no option {', '.join(sorted(set(options) - set(known)))}; "
+            f"their options: {', '.join(known) or 'none'}"
+        ) from None
+    return admit_building(reader(path, **options), path, strict=strict)
 
 
 def save(building: Building, path: str | Path, fmt: str | None = None, **options: Any) -> list[Path]:

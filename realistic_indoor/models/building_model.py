@@ -29,6 +29,18 @@ __all__ = [
 ]
 
 
+_LABEL_STATS_RANGES = (
+    ("share", 0.0, 1.0),
+    ("area_mean", 0.0, 100_000.0),
+    ("area_std", 0.0, 100_000.0),
+    ("doors_mean", 0.0, 1_000.0),
+    ("doors_std", 0.0, 1_000.0),
+    ("axes_ratio_mean", 0.0, 1_000.0),
+    ("axes_ratio_std", 0.0, 1_000.0),
+)
+"""Plausible range of each field of :class:`LabelStats` (NaN and infinities are refused)."""
+
+
 @dataclass(frozen=True)
 class LabelStats:
     """Statistics of the rooms of one semantic label (one row of the paper's Table 1).
@@ -41,6 +53,9 @@ class LabelStats:
         doors_std: Standard deviation of the number of doorways.
         axes_ratio_mean: Mean ratio of the bounding box's major to minor side (>= 1).
         axes_ratio_std: Standard deviation of the axes ratio.
+
+    Every field is a finite number within :data:`_LABEL_STATS_RANGES` (areas up to 100,000 m2,
+    door counts and axes ratios up to 1,000); a model file with other values is refused.
     """
 
     share: float
@@ -50,6 +65,13 @@ class LabelStats:
     doors_std: float
     axes_ratio_mean: float
     axes_ratio_std: float
+
+    def __post_init__(self) -> None:
+        for name, low, high in _LABEL_STATS_RANGES:
+            value = getattr(self, name)
+            ok = isinstance(value, (int, float)) and not isinstance(value, bool) and low <= value <= high
+            if not ok:
+                raise ConfigError(f"LabelStats.{name} must be a number in [{low:g}, {high:g}], got {value!r}")
 
     def sample_area(self, rng: np.random.Generator, low: float = 0.0, high: float = math.inf) -> float:
         """An area drawn from a log-normal with this mean and standard deviation, clipped (m2)."""

@@ -275,6 +275,8 @@ def _read_doors(root, path, grid, rooms, g, width_m) -> tuple[list[Door], list[s
     for el in root.findall("door"):
         where = f'door x="{el.get("x")}" y="{el.get("y")}" direction="{el.get("direction")}"'
         x, y, direction = (_int(el, k, path, where) for k in ("x", "y", "direction"))
+        if direction > 3:
+            raise PlanFormatError(path, f"direction must be 0, 1, 2 or 3, not {direction}", where)
         horizontal = direction % 2 == 0
         a, b = ((x - 1, y), (x, y)) if horizontal else ((x, y - 1), (x, y))
         owners = [int(grid[c]) if 0 <= c[0] < depth and 0 <= c[1] < width else -1 for c in (a, b)]

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from realistic_indoor.checks import require_between
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path
 from realistic_indoor.io.render.draw import draw_plan, plan_limits
@@ -26,6 +27,10 @@ LEGEND_IN = 1.6
 MIN_LEGEND_HEIGHT_IN = 2.4
 MIN_TITLED_WIDTH_IN = 4.6
 SUFFIXES = (".png", ".svg")
+MIN_SIZE_IN, MAX_SIZE_IN = 0.5, 200.0
+"""Range of a picture's longer side (inches)."""
+MIN_DPI, MAX_DPI = 10.0, 2400.0
+"""Range of the pixels per inch of a raster picture."""
 MAX_PICTURE_PIXELS = 64_000_000
 """Largest picture drawn (pixels, width times height): 8,000 x 8,000, about 250 MB while drawn."""
 
@@ -45,8 +50,8 @@ def plan_figure(
 
     Args:
         building: The building.
-        size_in: Length of the plan's longer side on the figure, inches.
-        dpi: Pixels per inch of raster output.
+        size_in: Length of the plan's longer side on the figure, inches, in [0.5, 200].
+        dpi: Pixels per inch of raster output, in [10, 2400].
         show_functions: Write room functions inside the rooms where they fit.
         title: ``True`` for the automatic title, a string for a custom one, ``False`` for none.
         legend: Draw the legend right of the plan.
@@ -57,14 +62,15 @@ def plan_figure(
         A matplotlib ``Figure`` on an Agg canvas (no display needed; not registered with pyplot).
 
     Raises:
-        ConfigError: If ``size_in`` or ``dpi`` is not positive, or the picture would exceed
+        ConfigError: If ``size_in`` is outside [0.5, 200] inches or ``dpi`` outside [10, 2400],
+            or the picture would exceed
             :data:`MAX_PICTURE_PIXELS`.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    if not size_in > 0 or not dpi > 0:
-        raise ConfigError(f"size_in and dpi must be positive (got size_in={size_in}, dpi={dpi})")
+    require_between("plan_figure", "size_in", size_in, MIN_SIZE_IN, MAX_SIZE_IN, "inches")
+    require_between("plan_figure", "dpi", dpi, MIN_DPI, MAX_DPI, "pixels per inch")
     x0, y0, x1, y1 = plan_limits(building)
     scale = size_in / max(x1 - x0, y1 - y0)
     plan_w, plan_h = (x1 - x0) * scale, (y1 - y0) * scale

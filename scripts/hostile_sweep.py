@@ -66,7 +66,7 @@ from typing import Any
 
 REPO = Path(__file__).resolve().parent.parent
 CORPUS = REPO / "tests" / "data" / "hostile"
-REAL_PLANS = Path("/work/shared/data/real_floorplans")
+REAL_PLANS = REPO.parent / "shared" / "data" / "real_floorplans"  # ../shared beside the checkout
 REAL_PICKS = ("office/Milano-1.xml", "school")  # one office plan and the smallest school plan
 TRACEBACK = "Traceback (most recent call last)"
 WARNING_PREFIX = "realistic-indoor: warning:"

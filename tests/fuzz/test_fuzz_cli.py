@@ -15,19 +15,14 @@ import shutil
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from fuzz_settings import fuzz
+from hypothesis import given
 from hypothesis import strategies as st
 
 from realistic_indoor.cli import main
 
 CORPUS = Path(__file__).resolve().parents[1] / "data" / "hostile"
-FUZZ = settings(
-    derandomize=True,
-    max_examples=400,
-    deadline=None,
-    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
-    database=None,
-)
+FUZZ = fuzz(400)
 
 NUMBERS = st.sampled_from(
     ["-1", "0", "nan", "inf", "-inf", "1e308", "abc", "", "1e-300", "3.5", "99999999999"]

@@ -7,7 +7,8 @@ import dataclasses
 
 import gymnasium as gym
 import pytest
-from hypothesis import given, settings
+from fuzz_settings import fuzz
+from hypothesis import given
 from hypothesis import strategies as st
 
 import realistic_indoor  # noqa: F401 - registers the environments
@@ -16,7 +17,7 @@ from realistic_indoor.sim.lidar import LidarConfig
 from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.world import WorldConfig
 
-FUZZ = settings(derandomize=True, max_examples=150, deadline=None, database=None)
+FUZZ = fuzz(150)
 VALUES = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),
     st.integers(-(2**70), 2**70),
@@ -41,7 +42,7 @@ def test_any_value_of_a_setting_is_accepted_or_refused_in_one_line(config, data)
     assert getattr(made, field) == value
 
 
-@settings(derandomize=True, max_examples=12, deadline=None, database=None)
+@fuzz(12)
 @given(
     radius=st.floats(0.05, 2.0),
     speed=st.floats(0.05, 5.0),

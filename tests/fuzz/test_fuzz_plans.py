@@ -17,7 +17,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from fuzz_settings import fuzz
+from hypothesis import given
 from hypothesis import strategies as st
 
 from realistic_indoor.building import Building
@@ -26,13 +27,7 @@ from realistic_indoor.errors import PlanRepairWarning, RealisticIndoorError
 from realistic_indoor.io import load
 
 CORPUS = Path(__file__).resolve().parents[1] / "data" / "hostile"
-FUZZ = settings(
-    derandomize=True,
-    max_examples=300,
-    deadline=None,
-    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
-    database=None,
-)
+FUZZ = fuzz(300)
 
 HOSTILE_NUMBERS = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),

@@ -92,7 +92,11 @@ def test_check_output_path__refuses_folders_suffixes_and_files_in_the_way(tmp_pa
         (["generate", "--count", "2", "--out-dir", "{tmp}/file"], "is a file, not a folder"),
         (["generate", "--type", "random", "--width", "0", "--height", "9"], "--width counts 3 m grid cells"),
         (["validate", "{tmp}/none", "--plot", "{tmp}/out.bmp"], "--plot"),
-        (["render", "{tmp}/plan.json", "-o", "{tmp}/x.png", "--size", "1000"], "exceeds the limit"),
+        (
+            ["render", "{tmp}/plan.json", "-o", "{tmp}/x.png", "--size", "150", "--dpi", "2000"],
+            "exceeds the limit",
+        ),
+        (["render", "{tmp}/plan.json", "-o", "{tmp}/x.png", "--size", "1000"], "in [0.5, 200] inches"),
         (
             ["convert", "{tmp}/plan.json", "-o", "{tmp}/x.yaml", "--resolution", "1e-5"],
             "--resolution must be a finite number in [0.01, 1] m, got 1e-05",

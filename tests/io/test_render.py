@@ -158,8 +158,10 @@ def test_render__wrong_extension_or_size_is_a_config_error(tiny_office, tmp_path
 
     with pytest.raises(ConfigError, match=r"\.png or \.svg"):
         write(tiny_office, tmp_path / "plan.jpg")
-    with pytest.raises(ConfigError, match="positive"):
+    with pytest.raises(ConfigError, match=r"size_in must be a finite number in \[0\.5, 200\] inches, got 0"):
         render_array(tiny_office, size_in=0)
+    with pytest.raises(ConfigError, match=r"dpi must be a finite number in \[10, 2400\]"):
+        render_array(tiny_office, dpi=1e-300)
 
 
 def test_render__title_names_the_plan(tiny_office):

@@ -9,10 +9,18 @@ navigator, driven step by step) and ``CartPole-v1`` (``gym.make``, random action
 as the yardstick, every rate also as a ratio to CartPole-v1's in the same run. Times are CPU
 seconds of this process (``time.process_time``).
 
+With ``--vector N,M``, a second table gives the decisions per second (wall clock) of Gymnasium's
+vector environments of N and M copies, ``vectorization_mode="sync"`` (one after another) and
+``"async"`` (one process each), all choosing candidate 0 and reading ``action_masks`` through
+``call`` as a masked learner does, each copy making the same number of decisions, beside one
+environment in the same loop: the native vector
+environment runs primitive actions only, and these are what runs macro actions.
+
 Usage::
 
     .venv/bin/python benchmarks/bench_macro.py                  # 3 episodes, about a minute
     .venv/bin/python benchmarks/bench_macro.py --episodes 5 --env SchoolExplore-v0
+    .venv/bin/python benchmarks/bench_macro.py --episodes 1 --vector 2,4
 """
 
 from __future__ import annotations
@@ -32,6 +40,13 @@ def main(argv: list[str] | None = None) -> None:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--env", default="OfficeExplore-v0", help="registered id (default OfficeExplore-v0)")
     p.add_argument("--episodes", type=int, default=3, help="episodes, seeds 0.. (default 3)")
+    p.add_argument("--vector", help="also time sync and async vector envs of these sizes, e.g. 2,4")
+    p.add_argument(
+        "--decisions",
+        type=int,
+        default=80,
+        help="decisions of each environment per vector timing (default 80)",
+    )
     args = p.parse_args(argv)
     cartpole = _cartpole_rate(20_000)
     decisions, steps, macro_s = 0, 0, 0.0
@@ -52,6 +67,48 @@ def main(argv: list[str] | None = None) -> None:
     )
     rate = agent_steps / agent_s
     print(f"| frontier agent, primitive actions | - | {rate:,.0f} | {rate / cartpole:.3f} | - |")
+    if args.vector:
+        _vector_table(args.env, [int(n) for n in args.vector.split(",")], args.decisions)
+
+
+def _vector_table(env_id: str, sizes: list[int], decisions: int) -> None:
+    """Decisions per second (wall clock) of one env and of sync and async vector envs."""
+    one = _decision_rate(
+        lambda: gym.make_vec(env_id, num_envs=1, vectorization_mode="sync", action_type="frontier"), decisions
+    )
+    print("\n| environments | decisions/s (wall clock) | x one environment |")
+    print("|---|---:|---:|")
+    print(f"| one | {one:.1f} | 1.00 |")
+    for n in sizes:
+        for mode in ("sync", "async"):
+            rate = _decision_rate(
+                lambda n=n, mode=mode: gym.make_vec(
+                    env_id, num_envs=n, vectorization_mode=mode, action_type="frontier"
+                ),
+                decisions,
+            )
+            print(f"| {n}, {mode} | {rate:.1f} | {rate / one:.2f} |")
+
+
+def _decision_rate(make, decisions: int) -> float:
+    """Decisions per wall-clock second of a vector env choosing candidate 0 (reset not timed).
+
+    Every copy makes ``decisions`` decisions, so each is as far into its episode (a decision
+    costs more as the robot's map grows) whatever the number of copies.
+    """
+    import numpy as np
+
+    envs = make()
+    envs.reset(seed=0)
+    done = 0
+    t0 = time.perf_counter()
+    while done < decisions * envs.num_envs:  # each environment as far into its episode
+        masks = np.stack(envs.call("action_masks"))
+        envs.step(np.zeros(envs.num_envs, dtype=np.int64) * masks[:, 0])
+        done += envs.num_envs
+    rate = done / (time.perf_counter() - t0)
+    envs.close()
+    return rate
 
 
 def _cartpole_rate(n_steps: int) -> float:

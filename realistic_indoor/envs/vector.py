@@ -124,7 +124,7 @@ class BatchedExploreEnv(VectorEnv):
         if self.config.action_type not in PRIMITIVE_ACTION_TYPES:
             raise ConfigError(
                 f"the native vector env runs primitive actions (continuous, discrete), got action_type "
-                f"{self.config.action_type!r}; use gym.make_vec(..., vectorization_mode='sync') for macro actions"
+                f"{self.config.action_type!r}; use gym.make_vec(..., vectorization_mode='async') (one process per copy) for macro actions"
             )
         if self.config.observation_extras:
             raise ConfigError(

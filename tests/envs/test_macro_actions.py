@@ -220,19 +220,29 @@ def test_macro_env__is_deterministic_for_a_seed():
     data_equivalence(a, b)
 
 
-def test_vector_envs__native_refuses_macro_actions_sync_runs_them():
-    with pytest.raises(ConfigError, match="vectorization_mode='sync'") as error:
+def test_vector_envs__native_refuses_macro_actions_sync_and_async_run_them_alike():
+    with pytest.raises(ConfigError, match="vectorization_mode='async'") as error:
         gym.make_vec("OfficeExplore-v0", num_envs=2, action_type="frontier")
     assert "\n" not in str(error.value)
-    envs = gym.make_vec(
-        "OfficeExplore-v0", num_envs=2, vectorization_mode="sync", action_type="frontier", area_m2=300.0
-    )
-    envs.reset(seed=0)
-    masks = np.stack(envs.call("action_masks"))
-    assert masks.shape == (2, 16) and masks[:, 0].all()
-    _, _, _, _, info = envs.step(np.zeros(2, dtype=np.int64))
-    assert (info["primitive_steps"] >= 1).all()
-    envs.close()
+    runs = []
+    for mode in ("sync", "async"):
+        envs = gym.make_vec(
+            "OfficeExplore-v0", num_envs=2, vectorization_mode=mode, action_type="frontier", area_m2=300.0
+        )
+        obs, _ = envs.reset(seed=0)
+        masks = np.stack(envs.call("action_masks"))
+        assert masks.shape == (2, 16) and masks[:, 0].all()
+        steps = []
+        for _ in range(3):
+            obs, reward, _, _, info = envs.step(np.zeros(2, dtype=np.int64))
+            steps.append((obs["candidates"].copy(), reward.copy(), info["primitive_steps"].copy()))
+        assert (steps[0][2] >= 1).all()
+        runs.append(steps)
+        envs.close()
+    for (c_sync, r_sync, p_sync), (c_async, r_async, p_async) in zip(*runs, strict=True):
+        np.testing.assert_array_equal(c_sync, c_async)
+        np.testing.assert_array_equal(r_sync, r_async)
+        np.testing.assert_array_equal(p_sync, p_async)
 
 
 def test_unknown_macro_settings__are_one_line_config_errors():

@@ -40,17 +40,48 @@ class ActionMap:
     Attributes:
         space: The Gymnasium action space.
         discrete: Whether the actions are discrete.
+        table: ``(6, 2)`` velocity commands (m/s, rad/s) of the discrete actions, in order.
+        limits: ``(2,)`` the commands of a full continuous action, ``(max_speed_m_s, max_turn_rad_s)``.
     """
 
     def __init__(self, action_type: str, max_speed_m_s: float, max_turn_rad_s: float) -> None:
         self._v_max = float(max_speed_m_s)
         self._w_max = float(max_turn_rad_s)
         self.discrete = action_type == "discrete"
+        self.limits = np.array([self._v_max, self._w_max])
+        self.table = np.array([(v * self._v_max, w * self._w_max) for _, v, w in DISCRETE_ACTIONS])
+        self._table = [tuple(row) for row in self.table.tolist()]
         if self.discrete:
-            self._table = [(v * self._v_max, w * self._w_max) for _, v, w in DISCRETE_ACTIONS]
             self.space: spaces.Space = spaces.Discrete(len(DISCRETE_ACTIONS))
         else:
             self.space = spaces.Box(-1.0, 1.0, (2,), np.float32)
+
+    def commands(self, actions: object, n: int) -> np.ndarray:
+        """The velocity commands of a batch of ``n`` actions, one per robot (the vector env's step).
+
+        Args:
+            actions: ``(n,)`` integers in ``0..5`` (discrete) or a finite ``(n, 2)`` array of
+                ``(linear, turn)`` (continuous; values outside ``[-1, 1]`` are clipped).
+            n: The number of robots.
+
+        Returns:
+            ``(n, 2)`` commands: linear velocity (m/s) and turn rate (rad/s).
+
+        Raises:
+            ActionError: If the batch has another shape, or holds an action outside the space.
+        """
+        a = np.asarray(actions)
+        if self.discrete:
+            if a.shape != (n,) or a.dtype.kind not in "iu" or ((a < 0) | (a >= len(self.table))).any():
+                raise ActionError(
+                    f"actions must be {n} integers in 0..{len(self.table) - 1}, got {actions!r}"
+                )
+            return self.table[a]
+        if a.shape != (n, 2) or a.dtype.kind not in "fiu" or not np.isfinite(a).all():
+            raise ActionError(
+                f"actions must be a finite ({n}, 2) array of (linear, turn) in [-1, 1], got {a.dtype} {a.shape}"
+            )
+        return np.minimum(np.maximum(a, -1.0), 1.0) * self.limits  # np.clip's values, a third of its cost
 
     def command(self, action: np.ndarray | int) -> tuple[float, float]:
         """The velocity command of ``action``.

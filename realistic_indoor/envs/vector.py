@@ -20,14 +20,14 @@ from numba.typed import List
 
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
-from realistic_indoor.envs.actions import DISCRETE_ACTIONS, PRIMITIVE_ACTION_TYPES, ActionMap
+from realistic_indoor.envs.actions import PRIMITIVE_ACTION_TYPES, ActionMap
 from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.presets import base_config
 from realistic_indoor.envs.rewards import term_weights
 from realistic_indoor.envs.source import episode_building
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
-from realistic_indoor.errors import ActionError, ConfigError
+from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
 from realistic_indoor.sim.disc_physics import THETA, X, Y, drive_params
 from realistic_indoor.sim.lidar import beam_offsets, draw_noise
@@ -143,12 +143,6 @@ class BatchedExploreEnv(VectorEnv):
         self._actions = ActionMap(
             self.config.action_type, self.config.robot.max_speed_m_s, self.config.robot.max_turn_rate_rad_s
         )
-        self._table = np.array(
-            [
-                (v * self.config.robot.max_speed_m_s, w * self.config.robot.max_turn_rate_rad_s)
-                for _, v, w in DISCRETE_ACTIONS
-            ]
-        )
         self.single_action_space = self._actions.space
         self.action_space = batch_space(self.single_action_space, num_envs)
         parts = self._observation_parts()
@@ -178,7 +172,6 @@ class BatchedExploreEnv(VectorEnv):
         self._autoreset = np.zeros(n, dtype=bool)
         self._rngs: list[np.random.Generator] = []
         self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
-        self._vw_limits = np.array([c.robot.max_speed_m_s, c.robot.max_turn_rate_rad_s])
         self._max_steps = min(c.max_steps, _INT64_MAX)  # a step count never passes it
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._weights = term_weights(c.rewards, self.term_names)
@@ -247,7 +240,7 @@ class BatchedExploreEnv(VectorEnv):
         """
         if not self._rngs:
             raise gym.error.ResetNeeded("call reset() before step()")
-        self._commands[:] = self._command_batch(actions)
+        self._commands[:] = self._actions.commands(actions, self.num_envs)
         self._mode[:] = np.where(self._autoreset, RESET, STEP)
         if self._autoreset.any():  # every next building drawn and built first, as in reset
             starting = [int(k) for k in np.flatnonzero(self._autoreset)]
@@ -517,26 +510,6 @@ class BatchedExploreEnv(VectorEnv):
         phys = self._batch.phys
         return (float(phys[k, X]), float(phys[k, Y]), float(phys[k, THETA]))
 
-    def _command_batch(self, actions: Any) -> np.ndarray:
-        """``(num_envs, 2)`` velocity commands (m/s, rad/s) of a batch of actions."""
-        a = np.asarray(actions)
-        if self._actions.discrete:
-            if (
-                a.shape != (self.num_envs,)
-                or a.dtype.kind not in "iu"
-                or ((a < 0) | (a >= len(self._table))).any()
-            ):
-                raise ActionError(
-                    f"actions must be {self.num_envs} integers in 0..{len(self._table) - 1}, got {actions!r}"
-                )
-            return self._table[a]
-        if a.shape != (self.num_envs, 2) or a.dtype.kind not in "fiu" or not np.isfinite(a).all():
-            raise ActionError(
-                f"actions must be a finite ({self.num_envs}, 2) array of (linear, turn) in [-1, 1], "
-                f"got {a.dtype} {a.shape}"
-            )
-        return np.minimum(np.maximum(a, -1.0), 1.0) * self._vw_limits  # np.clip's values, a third of its cost
-
     def _slot_arrays(self) -> dict[str, np.ndarray]:
         """Per sub-environment, what its building slot holds: start pose, floor, cell area.
 
@@ -569,7 +542,7 @@ class BatchedExploreEnv(VectorEnv):
         start = self._slot_arrays()
         scan, local_map, velocity, pose = observe(
             self._batch.phys, start["x"], start["y"], start["heading"], start["cos"], start["sin"],
-            self._vw_limits, POSE_LIMIT_M, self._scan_m, self._scan_scale, self._local_map,
+            self._actions.limits, POSE_LIMIT_M, self._scan_m, self._scan_scale, self._local_map,
         )  # fmt: skip
         return {"scan": scan, "local_map": local_map, "velocity": velocity, "pose": pose}
 

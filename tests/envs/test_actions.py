@@ -120,6 +120,35 @@ def test_discrete__non_integers_are_refused_not_rounded(discrete, action, kind):
         discrete.command(action)
 
 
+# -- batches (the native vector env's step) ---------------------------------------------------------
+def test_batch__discrete_rows_are_the_single_commands(discrete):
+    # forward, forward-left, forward-right, turn left, turn right, back at half speed
+    expected = [(0.5, 0.0), (0.25, 1.0), (0.25, -1.0), (0.0, 2.0), (0.0, -2.0), (-0.25, 0.0)]
+    batch = discrete.commands(np.array([5, 0, 3, 1, 4, 2]), 6)
+    np.testing.assert_allclose(batch, [expected[k] for k in (5, 0, 3, 1, 4, 2)])
+    np.testing.assert_allclose([discrete.command(k) for k in range(6)], expected)
+
+
+def test_batch__continuous_actions_are_scaled_and_clipped(continuous):
+    batch = continuous.commands(np.array([[1.0, 0.0], [3.0, -7.5], [-0.5, 0.25]]), 3)
+    np.testing.assert_allclose(batch, [(0.5, 0.0), (0.5, -2.0), (-0.25, 0.5)])
+
+
+@pytest.mark.parametrize(
+    ("kind", "actions"),
+    [
+        ("discrete", np.array([0, 6])),
+        ("discrete", np.array([0.0, 1.0])),
+        ("discrete", np.array([0, 1, 2])),
+        ("continuous", np.array([[0.0, np.nan], [0.0, 0.0]])),
+        ("continuous", np.zeros((3, 2))),
+    ],
+)
+def test_batch__an_action_outside_the_space_is_one_action_error(kind, actions):
+    with pytest.raises(ActionError, match="actions must be"):
+        ActionMap(kind, V_MAX, W_MAX).commands(actions, 2)
+
+
 def test_action_error__is_a_value_error_of_the_package():
     assert issubclass(ActionError, RealisticIndoorError) and issubclass(ActionError, ValueError)
 

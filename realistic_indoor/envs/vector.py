@@ -154,8 +154,8 @@ class BatchedExploreEnv(VectorEnv):
         c, n = self.config, self.num_envs
         self._cos, self._sin, closed = beam_table(beam_offsets(c.lidar))
         self._lidar = np.array([c.lidar.max_range_m, c.lidar.noise_std_m, float(closed)])
-        self._pool = max(1, int(c.local_map.resolution_m / c.world.resolution_m + 1e-9))
-        self._local = np.array([self._pool, c.local_map.resolution_m / (c.world.resolution_m * self._pool)])
+        self._pool, pixel = c.local_map.pooling(c.world.resolution_m)
+        self._local = np.array([self._pool, pixel])
         self._params = drive_params(c.robot, c.world.wall_thickness_m)
         self._batch = Batch(n)
         self._mode = np.zeros(n, dtype=np.int64)

@@ -25,11 +25,11 @@ from numba.typed import List
 from realistic_indoor.sim._map_kernels import integrate_scan, render_local
 from realistic_indoor.sim.disc_physics import STATE_SIZE, THETA, X, Y, drive, segment_grid
 from realistic_indoor.sim.lidar import _readings
-from realistic_indoor.sim.mapping import PIXEL_FREE, PIXEL_OCCUPIED, PIXEL_UNKNOWN, MapBits, _targets
+from realistic_indoor.sim.mapping import PIXEL_OF_STATE, MapBits, _targets
 from realistic_indoor.sim.raycast import _cast_fan
 from realistic_indoor.sim.world import World
 
-__all__ = ["LUT", "N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch", "step_batch_serial"]
+__all__ = ["N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch", "step_batch_serial"]
 
 SKIP, STEP, RESET = 0, 1, 2
 """What :func:`step_batch` does to a robot: nothing, a control step, or a first scan after a reset."""
@@ -158,10 +158,6 @@ def _skip_fields(worlds: list[World | None]) -> List:
     frozen = np.zeros((1, 1), dtype=np.uint8)
     frozen.setflags(write=False)  # the raycasters' skip fields are read-only
     return List([frozen if w is None else w.raycaster._skip for w in worlds])
-
-
-LUT = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
-"""Local view grey level of each map cell state."""
 
 
 @njit(cache=True, nogil=True, parallel=True)
@@ -367,7 +363,7 @@ def _step_robot(
     cell = res * pool
     x_view = (phys[i, X] - x0) / cell
     y_view = (phys[i, Y] - y0) / cell
-    render_local(pooled[i], LUT, x_view, y_view, ch, sh, pixel, out_local[i, 0])
+    render_local(pooled[i], PIXEL_OF_STATE, x_view, y_view, ch, sh, pixel, out_local[i, 0])
     out_terms[i, 0] = new * (res * res)  # as RobotMap.update: cells times the cell area
     out_terms[i, 1] = 1.0 if collided else 0.0
     out_terms[i, 2] = 1.0

@@ -39,6 +39,7 @@ __all__ = [
     "MAPPED_UNKNOWN",
     "PIXEL_FREE",
     "PIXEL_OCCUPIED",
+    "PIXEL_OF_STATE",
     "PIXEL_UNKNOWN",
     "FreeSpaceMarker",
     "LocalMapConfig",
@@ -49,6 +50,9 @@ __all__ = [
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
 """Grey levels of the local map image: walls black, free floor white, unknown grey."""
+PIXEL_OF_STATE = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
+"""The local map image's grey level of each map cell state (indexed by the ``MAPPED_*`` value)."""
+PIXEL_OF_STATE.setflags(write=False)
 
 
 class MapBits:
@@ -98,6 +102,16 @@ class LocalMapConfig:
         require_int("LocalMapConfig", "size_px", self.size_px, 1, 1024)
         require_between("LocalMapConfig", "resolution_m", self.resolution_m, 0.01, 2.0, "m")
 
+    def pooling(self, cell_m: float) -> tuple[int, float]:
+        """How map cells of ``cell_m`` metres are pooled for the image, as the kernels take it.
+
+        Returns:
+            ``(pool, pixel)``: map cells per side of a pooled cell (the largest whole number that
+            fits a pixel, at least 1), and a pixel's side in pooled cells.
+        """
+        pool = max(1, int(self.resolution_m / cell_m + 1e-9))
+        return pool, self.resolution_m / (cell_m * pool)
+
 
 class RobotMap:
     """The occupancy map a robot builds from its scans, on the world's raster cells.
@@ -128,7 +142,7 @@ class RobotMap:
         self._targets = _targets(world)
         self._bits = MapBits(self._targets)
         self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
-        self._pool = max(1, int(self.local.resolution_m / self._res + 1e-9))
+        self._pool = self.local.pooling(self._res)[0]
         h, w = world.raster.shape
         self._pooled = np.zeros((-(-h // self._pool), -(-w // self._pool)), dtype=np.uint8)
         self._reachable_cells = int(np.count_nonzero(world.reachable))
@@ -136,7 +150,6 @@ class RobotMap:
         self._offsets: np.ndarray | None = None
         self._cos = self._sin = np.zeros(0)
         self._closed = False
-        self._lut = np.array([PIXEL_UNKNOWN, PIXEL_FREE, PIXEL_OCCUPIED], dtype=np.uint8)
 
     @property
     def grid(self) -> np.ndarray:
@@ -236,7 +249,7 @@ class RobotMap:
         cell = self._res * self._pool
         render_local(
             self._pooled,
-            self._lut,
+            PIXEL_OF_STATE,
             (x - self._x0) / cell,
             (y - self._y0) / cell,
             math.cos(theta),

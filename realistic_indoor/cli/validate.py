@@ -120,7 +120,7 @@ def _names(args: argparse.Namespace) -> list[str | None]:
     return names
 
 
-def _reference(args: argparse.Namespace):
+def _reference(args: argparse.Namespace, names: list[str]):
     import glob
 
     from realistic_indoor.models.reference import REFERENCE_SETS
@@ -134,7 +134,23 @@ def _reference(args: argparse.Namespace):
             f"--reference {ref!r} is neither a folder, file or pattern of plans nor a paper table "
             f"(paper, {', '.join(REFERENCE_SETS)})"
         )
-    return load_plan_set(ref, strict=args.strict, progress=show_progress(args.quiet))
+    return load_plan_set(
+        ref, _reference_name(ref, names), strict=args.strict, progress=show_progress(args.quiet)
+    )
+
+
+def _reference_name(spec: str, set_names: list[str]) -> str:
+    """The reference's name in the report: its folder's name, or more of its path where a set has it.
+
+    A set named the same (``gen/office`` against ``real/office``) would make the tables read
+    ``office vs office``; then the reference is named by its last two parts (``real/office``), and
+    ``reference`` is put before a name that still collides.
+    """
+    parts = Path(spec.rstrip("/")).parts
+    name = Path(parts[-1]).stem if parts else spec
+    if name in set_names and len(parts) >= 2 and parts[-2] not in ("..", "."):
+        name = f"{parts[-2]}/{name}"
+    return f"reference {name}" if name in set_names else name
 
 
 def _feature_groups(text: str) -> tuple[str, ...]:
@@ -192,7 +208,9 @@ def run(args: argparse.Namespace) -> int:
     names = _names(args)
     _check_arguments(args)
     progress = show_progress(args.quiet)
-    reference = _reference(args)
+    reference = _reference(
+        args, [n or Path(str(spec).rstrip("/")).stem for spec, n in zip(args.sets, names, strict=True)]
+    )
     sets = [
         load_plan_set(spec, name, strict=args.strict, progress=progress)
         for spec, name in zip(args.sets, names, strict=True)

@@ -190,3 +190,21 @@ def test_validate__progress_on_a_terminal_and_none_with_quiet(plan_folders, monk
         assert stage in err
     assert main([*argv, "--quiet"]) == 0
     assert capsys.readouterr().err == ""
+
+
+def test_validate__a_reference_folder_is_named_by_its_path_not_only_its_type(plan_folders, capsys):
+    import shutil
+
+    shutil.copytree(plan_folders / "mazes", plan_folders / "generated" / "office")
+    shutil.copytree(plan_folders / "tidy", plan_folders / "real" / "office")
+    argv = [str(plan_folders / "generated" / "office"), "--reference", str(plan_folders / "real" / "office")]
+    assert main(["validate", *argv, "--no-two-sample"]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0].startswith("Realism of 1 set of office plans against real/office")
+    header = next(line for line in out.splitlines() if line.startswith("label "))
+    assert header.split()[-2:] == ["office", "real/office"]
+    # where the folder's last two parts name a set as well, "reference" is put before them
+    sets = [str(plan_folders / "generated" / "office"), str(plan_folders / "real" / "office")]
+    both = [*sets, "--labels", "office,real/office", "--reference", str(plan_folders / "real" / "office")]
+    assert main(["validate", *both, "--no-two-sample"]) == 0
+    assert "against reference real/office" in capsys.readouterr().out

@@ -1,3 +1,6 @@
+import json
+from importlib import resources
+
 import pytest
 
 from realistic_indoor.building import Building, BuildingType, Room, SemanticLabel
@@ -111,7 +114,12 @@ def test_common_building_type__from_the_plans_or_a_clear_error(mazes, room_chain
 def test_compare_sets__scale_flags_use_the_plan_type(maze_office, scaled):
     big = PlanSet.of("big", [scaled(maze_office, 10.0), maze_office])
     (flag,) = compare_sets([big], "office", two_sample=False).sets[0].scale_flags
-    assert flag.length_factor == pytest.approx((18.5 / 1600) ** 0.5)
+    data = json.loads(
+        resources.files("realistic_indoor").joinpath("data/real_models.json").read_text("utf-8")
+    )
+    expected = data["office"]["labels"]["medium"]["area_mean"]  # real offices' medium rooms
+    assert flag.length_factor == pytest.approx((expected / 1600) ** 0.5)
+    assert flag.reference == "real offices"
 
 
 def test_judged_type__valid_types_are_the_three_with_a_reference():

@@ -10,8 +10,22 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.batch import STEP_TERMS
 
-__all__ = ["RewardWeights", "auc_weight", "reward_terms", "term_weights", "weighted_sum"]
+__all__ = [
+    "EXPLORE_TERMS",
+    "SEARCH_TERMS",
+    "RewardWeights",
+    "auc_weight",
+    "reward_terms",
+    "term_weights",
+    "weighted_sum",
+]
+
+EXPLORE_TERMS = STEP_TERMS
+"""The reward terms of exploration, in order: ``new_area``, ``collision``, ``time``."""
+SEARCH_TERMS = (*STEP_TERMS, "victim")
+"""The reward terms of search: those of exploration, then ``victim`` (victims newly found)."""
 
 
 @dataclass(frozen=True)
@@ -61,10 +75,10 @@ def reward_terms(new_area_m2: float, collided: bool, victims_found: int | None =
     Returns:
         ``{"new_area": m2, "collision": 0 or 1, "time": 1}`` plus ``"victim": count``.
     """
-    terms = {"new_area": float(new_area_m2), "collision": float(collided), "time": 1.0}
+    values = (float(new_area_m2), float(collided), 1.0)
     if victims_found is not None:
-        terms["victim"] = float(victims_found)
-    return terms
+        return dict(zip(SEARCH_TERMS, (*values, float(victims_found)), strict=True))
+    return dict(zip(EXPLORE_TERMS, values, strict=True))
 
 
 def auc_weight(step: int, max_steps: int) -> float:

@@ -24,7 +24,7 @@ from realistic_indoor.envs.actions import PRIMITIVE_ACTION_TYPES, ActionMap
 from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.presets import base_config
-from realistic_indoor.envs.rewards import term_weights
+from realistic_indoor.envs.rewards import EXPLORE_TERMS, term_weights
 from realistic_indoor.envs.source import episode_building
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ConfigError
@@ -95,7 +95,7 @@ class BatchedExploreEnv(VectorEnv):
     metadata = {"render_modes": list(RENDER_MODES), "autoreset_mode": AutoresetMode.NEXT_STEP}
     task = "explore"
     """The task whose configuration fields apply (:data:`~realistic_indoor.envs.config.TASK_FIELDS`)."""
-    term_names: tuple[str, ...] = ("new_area", "collision", "time")
+    term_names: tuple[str, ...] = EXPLORE_TERMS
     """The reward terms, in the order the single environment sums them."""
     reset_options: frozenset[str] = frozenset({"reset_mask", "building"})
     """Keys ``reset(options=...)`` accepts."""

@@ -13,10 +13,14 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.envs.observations import explore_observations
+from realistic_indoor.envs.rewards import SEARCH_TERMS
 from realistic_indoor.envs.search import VictimObservation, given_victims
 from realistic_indoor.envs.vector import BatchedExploreEnv
 from realistic_indoor.sim.victims import Victims, place_victims
 from realistic_indoor.sim.world import World
+
+_VICTIM = SEARCH_TERMS.index("victim")
+"""The column of the victim term among the reward terms."""
 
 __all__ = ["BatchedSearchEnv"]
 
@@ -42,7 +46,7 @@ class BatchedSearchEnv(BatchedExploreEnv):
     """
 
     task = "search"
-    term_names = ("new_area", "collision", "time", "victim")
+    term_names = SEARCH_TERMS
     reset_options = frozenset({"reset_mask", "building", "victims"})
 
     def __init__(self, num_envs: int = 1, config: Any = None, max_episode_steps: int | None = None,
@@ -80,10 +84,10 @@ class BatchedSearchEnv(BatchedExploreEnv):
         return mask
 
     def _sense(self, stepped: np.ndarray) -> None:
-        self._terms[:, 3] = 0.0
+        self._terms[:, _VICTIM] = 0.0
         for k in np.flatnonzero(stepped):
             world = self._batch.worlds[self._batch.robot_building[k]]
-            self._terms[k, 3] = self._victims[k].look(world.raycaster, self._pose(int(k)))
+            self._terms[k, _VICTIM] = self._victims[k].look(world.raycaster, self._pose(int(k)))
 
     def _done(self, coverage: np.ndarray) -> np.ndarray:
         return np.array([v.found.all() for v in self._victims])

@@ -29,12 +29,15 @@ from realistic_indoor.sim.mapping import PIXEL_OF_STATE, MapBits, _targets
 from realistic_indoor.sim.raycast import _cast_fan
 from realistic_indoor.sim.world import World
 
-__all__ = ["N_TERMS", "RESET", "SKIP", "STEP", "Batch", "step_batch", "step_batch_serial"]
+__all__ = ["N_TERMS", "RESET", "SKIP", "STEP", "STEP_TERMS", "Batch", "step_batch", "step_batch_serial"]
 
 SKIP, STEP, RESET = 0, 1, 2
 """What :func:`step_batch` does to a robot: nothing, a control step, or a first scan after a reset."""
-N_TERMS = 3
-"""Reward terms per robot: new area (m2), collision (0 or 1), time (1)."""
+STEP_TERMS = ("new_area", "collision", "time")
+"""The reward terms a control step measures, in the columns the kernels write them: floor newly
+observed (m2), whether the robot touched a wall (0 or 1), and the step itself (1)."""
+N_TERMS = len(STEP_TERMS)
+"""Reward terms per robot that the kernels write."""
 
 
 class Batch:

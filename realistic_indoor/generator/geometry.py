@@ -182,24 +182,28 @@ def _boundary_edges(rects: list[Rect]) -> list[tuple[tuple[int, int], tuple[int,
     """Directed unit-free boundary pieces of the union, counter-clockwise around the interior."""
     xs = sorted({v for r in rects for v in (r[0], r[2])})
     ys = sorted({v for r in rects for v in (r[1], r[3])})
-
-    def inside(cx: float, cy: float) -> bool:
-        return any(r[0] < cx < r[2] and r[1] < cy < r[3] for r in rects)
-
+    col = {x: i for i, x in enumerate(xs)}
+    row = {y: j for j, y in enumerate(ys)}
+    # filled[i + 1][j + 1]: whether the grid cell between xs[i], xs[i + 1] and ys[j], ys[j + 1] is
+    # covered; a border of empty cells stands for the outside
+    filled = [[False] * (len(ys) + 1) for _ in range(len(xs) + 1)]
+    for r in rects:
+        for i in range(col[r[0]], col[r[2]]):
+            for j in range(row[r[1]], row[r[3]]):
+                filled[i + 1][j + 1] = True
     edges = []
     for i in range(len(xs) - 1):
         for j in range(len(ys) - 1):
-            cx, cy = (xs[i] + xs[i + 1]) / 2, (ys[j] + ys[j + 1]) / 2
-            if not inside(cx, cy):
+            if not filled[i + 1][j + 1]:
                 continue
             x0, x1, y0, y1 = xs[i], xs[i + 1], ys[j], ys[j + 1]
-            if not inside(cx, y0 - 0.5):
+            if not filled[i + 1][j]:
                 edges.append(((x0, y0), (x1, y0)))
-            if not inside(x1 + 0.5, cy):
+            if not filled[i + 2][j + 1]:
                 edges.append(((x1, y0), (x1, y1)))
-            if not inside(cx, y1 + 0.5):
+            if not filled[i + 1][j + 2]:
                 edges.append(((x1, y1), (x0, y1)))
-            if not inside(x0 - 0.5, cy):
+            if not filled[i][j + 1]:
                 edges.append(((x0, y1), (x0, y0)))
     return edges
 

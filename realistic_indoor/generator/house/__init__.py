@@ -1,0 +1,15 @@
+"""Houses with a house's programme: the table of rooms by floor area, its layout, doors and labels.
+
+- :mod:`~realistic_indoor.generator.house.programme`: how many rooms of each kind a house of a
+  given floor area has, and how large (the table of docs/generator.md, with its sources);
+- :mod:`~realistic_indoor.generator.house.layout`: the footprint cut into a day zone, an
+  entrance, hallways and bands of rooms;
+- :mod:`~realistic_indoor.generator.house.bands`: rooms side by side along a hallway;
+- :mod:`~realistic_indoor.generator.house.rooms`: the rooms put on the plan;
+- :mod:`~realistic_indoor.generator.house.doors`: front door, day rooms, night rooms;
+- :mod:`~realistic_indoor.generator.house.generator`: :class:`HouseGenerator`, which runs them.
+"""
+
+from realistic_indoor.generator.house.generator import MAX_AREA_M2, MIN_AREA_M2, HouseGenerator
+
+__all__ = ["MAX_AREA_M2", "MIN_AREA_M2", "HouseGenerator"]

@@ -111,9 +111,9 @@ def check_new_outputs(
     Raises:
         ConfigError: Naming the first such path and, for a batch, how many there are.
     """
-    inputs = list(inputs)
+    sources = _expanded(inputs)  # globs expanded once, not once per output
     for p in paths:
-        source = input_named(p, inputs)
+        source = input_named(p, sources)
         if source is not None:
             raise ConfigError(f"{option} {p}: is an input of this command ({source}); choose another name")
     if overwrite:

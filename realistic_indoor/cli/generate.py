@@ -104,6 +104,11 @@ def _check_grid_size(width: int, height: int) -> None:
             )
 
 
+def _model_file(args: argparse.Namespace) -> list[str]:
+    """The model file ``--model`` names, as the command's inputs (none for ``real`` or ``paper``)."""
+    return [args.model] if args.model and args.model not in ("real", "paper") else []
+
+
 def _read_model(path: Path):
     import json
 
@@ -148,7 +153,7 @@ def _check_outputs(args: argparse.Namespace) -> None:
     from realistic_indoor.cli._outputs import check_output
     from realistic_indoor.errors import ConfigError
 
-    inputs = [args.model] if args.model and args.model not in ("real", "paper") else []
+    inputs = _model_file(args)
     if args.output:
         save_options(args, args.output)
         check_output(args.output, "-o", overwrite=args.overwrite, inputs=inputs)
@@ -191,7 +196,7 @@ def _many(gen, args: argparse.Namespace) -> int:
         raise ConfigError(f"--seed must be a non-negative integer, not {first}")
     seeds = range(first, first + args.count)
     targets = [c for seed in seeds for c in companions(out / f"{args.type}_{seed}{ext}")]
-    inputs = [args.model] if args.model and args.model not in ("real", "paper") else []
+    inputs = _model_file(args)
     check_new_outputs(targets, "--out-dir", overwrite=args.overwrite, inputs=inputs)
     written = 0
     for seed in tqdm(seeds, desc=f"{args.type} buildings", unit="building"):

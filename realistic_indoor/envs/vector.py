@@ -38,7 +38,6 @@ __all__ = ["INFO_KEYS", "ROBOTS_PER_THREAD", "BatchedExploreEnv", "step_threads"
 
 INFO_KEYS = ("coverage", "observed_area_m2", "path_length_m", "collisions")
 """Arrays of ``info`` after every step and reset (with Gymnasium's ``_key`` masks)."""
-_INT64_MAX = int(np.iinfo(np.int64).max)
 ROBOTS_PER_THREAD = 16
 """Fewest robots per numba thread: a step of a few robots on two threads of a loaded 2-core
 machine took 9 ms (waking the other thread), against 0.1 ms per robot on one."""
@@ -172,7 +171,7 @@ class BatchedExploreEnv(VectorEnv):
         self._autoreset = np.zeros(n, dtype=bool)
         self._rngs: list[np.random.Generator] = []
         self._rng_list: List | None = None  # the same generators in a numba typed List, for draw_noise
-        self._max_steps = min(c.max_steps, _INT64_MAX)  # a step count never passes it
+        self._max_steps = c.max_steps  # at most MAX_STEPS (1,000,000): an int64 step count holds it
         self._scan_scale = np.float32(1.0 / c.lidar.max_range_m)
         self._weights = term_weights(c.rewards, self.term_names)
         self._slots: dict[str, np.ndarray] | None = None

@@ -89,7 +89,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--two-sample-area",
         action="store_true",
-        help="let the two-sample tests use room areas and room density (default: scale-free features only)",
+        help="let the room-level two-sample tests use room areas (default: scale-free room features; the building level always has the room density)",
     )
     p.add_argument(
         "--two-sample-features",

@@ -66,6 +66,9 @@ class BuildingMeasures:
             pairs of rooms joined by doors; 0 for a single room).
         door_depth_norm: ``door_depth`` divided by the square root of the number of rooms.
         one_door_share: Share of ordinary rooms (small, medium, big) with exactly one door.
+        leaf_share: Share of all rooms joined by doors to exactly one other room (dead ends of
+            the door graph; exterior doors and parallel doors not counted); ``nan`` for a
+            building of one room.
         circulation_loops: Cycle rank of the corridor-and-hall network (independent loops:
             edges minus nodes plus components of the graph of corridors and halls joined by
             doors, parallel doors counted once).
@@ -81,6 +84,7 @@ class BuildingMeasures:
     door_depth: float
     door_depth_norm: float
     one_door_share: float
+    leaf_share: float
     circulation_loops: int
     core_facade_share: float
 
@@ -98,6 +102,7 @@ BUILDING_MEASURES: dict[str, str] = {
     "door_depth": "mean doors between two rooms",
     "door_depth_norm": "mean doors between two rooms / sqrt(rooms)",
     "one_door_share": "share of ordinary rooms with one door",
+    "leaf_share": "share of rooms with one neighbouring room",
     "circulation_loops": "independent loops of the corridor-and-hall network",
     "core_facade_share": "share of core rooms with a facade",
 }
@@ -147,6 +152,7 @@ def building_measures(building: Building) -> BuildingMeasures:
         door_depth=depth,
         door_depth_norm=depth / math.sqrt(len(building.rooms)),
         one_door_share=_one_door_share(building),
+        leaf_share=_leaf_share(building),
         circulation_loops=circulation_loops(building),
         core_facade_share=_core_facade_share(building, shape),
     )
@@ -172,6 +178,13 @@ def _one_door_share(building: Building) -> float:
     if not rooms:
         return math.nan
     return sum(len(building.doors_of[r.id]) == 1 for r in rooms) / len(rooms)
+
+
+def _leaf_share(building: Building) -> float:
+    if len(building.rooms) < 2:
+        return math.nan
+    graph = nx.Graph(building.graph())
+    return sum(degree == 1 for _room, degree in graph.degree()) / len(building.rooms)
 
 
 def _core_facade_share(building: Building, shape: BaseGeometry) -> float:

@@ -10,6 +10,7 @@ from realistic_indoor.building import Building, Door, Room
 from realistic_indoor.validator.building_measures import BUILDING_MEASURES, building_measures, footprint
 
 V = math.pi / 2  # a door on a vertical wall
+H = 0.0  # a door on a horizontal wall
 
 
 def square_office() -> Building:
@@ -119,6 +120,24 @@ def test_building_measures__long_thin_building():
     # a chain of 8: sum over ordered pairs of |i - j| is 2 * 84 = 168, over 56 pairs
     assert m.door_depth == pytest.approx(3.0)
     assert m.one_door_share == pytest.approx(2 / 8)  # the two ends
+    assert m.leaf_share == pytest.approx(2 / 8)  # only the ends have one neighbour
+
+
+def test_building_measures__leaf_share_counts_neighbours_not_doors():
+    # a corridor with three offices on it; the first office has two doors to the corridor and
+    # a door to the second: neighbours corridor 3, o0 2, o1 2, o2 1 -> one leaf of four rooms
+    rooms = (
+        Room.rectangle("c", "corridor", "corridor", (0, 0, 15, 2)),
+        *(Room.rectangle(f"o{i}", "medium", "office", (5 * i, 2, 5 * i + 5, 7)) for i in range(3)),
+    )
+    doors = (
+        Door("d0", "c", "o0", 1.5, 2, 0.9, H),
+        Door("d0b", "c", "o0", 3.5, 2, 0.9, H),
+        Door("d1", "c", "o1", 7.5, 2, 0.9, H),
+        Door("d2", "c", "o2", 12.5, 2, 0.9, H),
+        Door("d01", "o0", "o1", 5, 4.5, 0.9, V),
+    )
+    assert building_measures(Building("office", rooms, doors)).leaf_share == pytest.approx(1 / 4)
 
 
 def test_building_measures__interior_office_has_no_facade():

@@ -13,7 +13,7 @@ from realistic_indoor.validator.building_measures import BuildingMeasures, devia
 
 def _measures(fill: float, loops: int = 0) -> BuildingMeasures:
     nan = math.nan
-    return BuildingMeasures(fill, 0.5, 1.0, 0.3, 200.0, 3.0, 0.5, 0.8, loops, nan)
+    return BuildingMeasures(fill, 0.5, 1.0, 0.3, 200.0, 3.0, 0.5, 0.8, 0.7, loops, nan)
 
 
 def test_measure_summary__median_and_quartiles_over_plans():

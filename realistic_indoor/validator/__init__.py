@@ -9,6 +9,8 @@
   real buildings, with the worst deviations in words;
 - :func:`two_sample_test`: can a classifier tell two sets apart?
 - :func:`scale_check`: plans whose scale looks wrong;
+- :func:`house_check`, :func:`house_summary`: house plans against the house programme of
+  published housing statistics;
 - :func:`compare_sets`, :func:`render_comparison`, :func:`plot_comparison`: all of it for several
   sets of maps side by side (what ``realistic-indoor validate`` prints and draws).
 
@@ -19,6 +21,7 @@ from realistic_indoor.models.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.compare import Comparison, SetReport, compare_sets
 from realistic_indoor.validator.connectivity import Connectivity, connectivity, room_mazes, set_connectivity
 from realistic_indoor.validator.features import RoomFeatures, all_room_features, room_features
+from realistic_indoor.validator.house_programme import HouseCheck, HouseSummary, house_check, house_summary
 from realistic_indoor.validator.label_inference import infer_labels, lacks_labels, size_thresholds
 from realistic_indoor.validator.plan_sets import PlanSet, load_plan_set
 from realistic_indoor.validator.reference import Reference, fitted_reference, paper_reference
@@ -30,6 +33,8 @@ from realistic_indoor.validator.two_sample import TwoSampleResult, two_sample_te
 __all__ = [
     "Comparison",
     "Connectivity",
+    "HouseCheck",
+    "HouseSummary",
     "PlanSet",
     "RealismScore",
     "Reference",
@@ -42,6 +47,8 @@ __all__ = [
     "compare_sets",
     "connectivity",
     "fitted_reference",
+    "house_check",
+    "house_summary",
     "infer_labels",
     "label_table",
     "lacks_labels",

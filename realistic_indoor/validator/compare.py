@@ -13,6 +13,7 @@ from realistic_indoor.errors import ConfigError, RealisticIndoorError
 from realistic_indoor.models.scale import ScaleFlag, scale_check
 from realistic_indoor.validator.building_measures import BuildingMeasures, building_measures, measure_summary
 from realistic_indoor.validator.connectivity import set_connectivity
+from realistic_indoor.validator.house_programme import HouseCheck, HouseSummary, house_check, house_summary
 from realistic_indoor.validator.label_inference import infer_labels, lacks_labels
 from realistic_indoor.validator.plan_sets import PlanSet, SkippedPlanWarning, plan_problem
 from realistic_indoor.validator.reference import Reference, fitted_reference, paper_reference
@@ -58,6 +59,8 @@ class SetReport:
         skipped: ``(source, reason)`` of plans left out: those of its files that could not be
             read, then those that cannot be measured.
         measures: The building-level measures of each plan, in the order of ``plans``.
+        houses: Each plan measured against the house programme, in the order of ``plans``
+            (sets judged as houses only).
     """
 
     plans: PlanSet
@@ -68,6 +71,12 @@ class SetReport:
     inferred: tuple[str, ...]
     skipped: tuple[tuple[str, str], ...]
     measures: tuple[BuildingMeasures, ...] = ()
+    houses: tuple[HouseCheck, ...] = ()
+
+    @property
+    def house_summary(self) -> HouseSummary | None:
+        """The share of the set's plans inside the house programme per item (``None``: not judged as houses)."""
+        return house_summary(self.houses) if self.houses else None
 
     @property
     def measure_summary(self) -> dict[str, dict[str, float]]:
@@ -219,7 +228,8 @@ def _report(
     )
     score = score_statistics(table, conn, reference, cfg)
     measures = tuple(building_measures(b) for b in prepared.buildings)
-    return SetReport(prepared, table, conn, score, flags, inferred, skipped, measures)
+    houses = tuple(house_check(b) for b in prepared.buildings) if btype is BuildingType.HOUSE else ()
+    return SetReport(prepared, table, conn, score, flags, inferred, skipped, measures, houses)
 
 
 def _reference(

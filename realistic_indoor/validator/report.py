@@ -10,6 +10,15 @@ from realistic_indoor.errors import ConfigError
 from realistic_indoor.validator.building_measures import BUILDING_MEASURES, deviations, measure_summary
 from realistic_indoor.validator.connectivity import CONNECTIVITY_METRICS
 from realistic_indoor.validator.grid import json_safe, render_grid
+from realistic_indoor.validator.house_programme import (
+    COUNTED_FUNCTIONS,
+    FIXED_COUNTS,
+    HOUSE_ITEMS,
+    HOUSE_REFERENCE,
+    HOUSE_RULES,
+    bands_near,
+    house_reference,
+)
 from realistic_indoor.validator.tables import TABLE_FORMATS, label_table_records, label_table_rows
 
 if TYPE_CHECKING:
@@ -24,6 +33,10 @@ SCORE_SCALE = "0 = identical to the reference; below 0.5 hard to tell apart, 0.5
 TWO_SAMPLE_SCALE = (
     "balanced accuracy of a classifier telling two sets apart; 0.5 = indistinguishable, 1 = always told apart"
 )
+
+
+OUTSIDE_SHOWN = 10
+"""How many houses outside the programme the text report names (JSON names them all)."""
 
 
 def _num(x: float, digits: int = 1) -> str:
@@ -82,6 +95,37 @@ def _median_iqr(stat: dict[str, float]) -> str:
     return f"{stat['median']:.3g} [{stat['q1']:.3g}-{stat['q3']:.3g}]"
 
 
+_HOUSE_MEDIAN = {"hallway_width": "{:.2f}", "corridor_share": "{:.1%}"}
+"""Formats of the medians of the house programme's items that are not counts."""
+
+
+def _house_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
+    """Per item of the house programme: the share of each set's plans inside it (median)."""
+    sets = [s for s in c.sets if s.houses]
+    header = ["item (share of plans inside [median])", *(s.name for s in sets), "programme"]
+    summaries = [s.house_summary for s in sets]
+    rows = []
+    for key, words in HOUSE_ITEMS.items():
+        cells = []
+        for summary in summaries:
+            share, median = summary.inside[key], summary.medians.get(key, math.nan)
+            cell = "-" if math.isnan(share) else f"{100 * share:.0f}%"
+            cells.append(
+                cell if math.isnan(median) else f"{cell} [{_HOUSE_MEDIAN.get(key, '{:g}').format(median)}]"
+            )
+        rows.append([words, *cells, _house_rule(key, sets)])
+    rows.append(["every item", *(f"{100 * x.all_inside:.0f}%" for x in summaries), ""])
+    return header, rows
+
+
+def _house_rule(key: str, sets: list[SetReport]) -> str:
+    """What the programme asks of an item: its counts at the bands of the sets' plans, where few."""
+    rows = {r for s in sets for h in s.houses for r in bands_near(h.floor_area_m2)}
+    if key in FIXED_COUNTS or key not in COUNTED_FUNCTIONS or len(rows) > 3:
+        return HOUSE_RULES[key]
+    return "; ".join(f"{getattr(r, key)} at {r.band}" for r in sorted(rows, key=lambda r: r.min_area_m2))
+
+
 def _building_worst(c: Comparison, s: SetReport, worst: int) -> list[str]:
     """The measures whose median lies farthest outside the reference plans' interquartile range."""
     if not c.reference_measures:
@@ -126,6 +170,17 @@ def _lists(c: Comparison) -> list[tuple[str, list[str]]]:
     flags = [f.message for s in c.sets for f in s.scale_flags]
     if flags:
         out.append(("Plans whose scale looks wrong", flags))
+    outside = [
+        f"{s.name}: {src}: {'; '.join(h.problems())}"
+        for s in c.sets
+        if s.houses
+        for src, h in zip(s.plans.sources, s.houses, strict=True)
+        if not h.inside
+    ]
+    if outside:
+        shown = outside[:OUTSIDE_SHOWN]
+        more = len(outside) - len(shown)
+        out.append(("Houses outside the programme", shown + ([f"... and {more} more"] if more else [])))
     left = [f"{s.name}: {src}: {why}" for s in c.sets for src, why in s.skipped]
     if left:
         out.append(("Plans left out", left))
@@ -151,6 +206,8 @@ def _text(c: Comparison, fmt: str, worst: int) -> str:
     parts.append(render_grid(*label_table_rows(tables), fmt, "Table 1: rooms per semantic label"))
     parts.append(render_grid(*_connectivity_rows(c), fmt, "Connectivity"))
     parts.append(render_grid(*_measure_rows(c), fmt, "Building-level measures (docs/validator.md)"))
+    if any(s.houses for s in c.sets):
+        parts.append(render_grid(*_house_rows(c), fmt, f"House programme: against {HOUSE_REFERENCE}"))
     parts.append(render_grid(*_score_rows(c), fmt, f"Realism score ({SCORE_SCALE})"))
     if c.two_sample:
         parts.append(render_grid(*_two_sample_rows(c), fmt, f"Two-sample tests ({TWO_SAMPLE_SCALE})"))
@@ -196,13 +253,22 @@ def comparison_to_dict(c: Comparison) -> dict[str, Any]:
                 ],
                 "building_worst": _building_worst(c, s, 5),
                 "scale_flags": [{**vars(f), "message": f.message} for f in s.scale_flags],
+                "house_programme": _house_dict(s) if s.houses else None,
             }
             for s in c.sets
         ],
         "two_sample": [{**t.to_dict(), "sentence": t.sentence()} for t in c.two_sample],
         "notes": list(c.notes),
     }
+    if any(s.houses for s in c.sets):
+        data["house_reference"] = house_reference()
     return json_safe(data)
+
+
+def _house_dict(s: SetReport) -> dict[str, Any]:
+    """A set's plans against the house programme: the summary, and each plan's measures and problems."""
+    plans = [{"source": src, **h.to_dict()} for src, h in zip(s.plans.sources, s.houses, strict=True)]
+    return {"summary": vars(s.house_summary), "plans": plans}
 
 
 def _csv(c: Comparison) -> str:
@@ -216,6 +282,11 @@ def _csv(c: Comparison) -> str:
             for k in ("overall", "features", "shares", "connectivity", "tv_distance")
         ]
         rows += [["scale", s.name, f.source, "length_factor", repr(f.length_factor)] for f in s.scale_flags]
+        if s.houses:
+            summary = s.house_summary
+            rows += [["house", s.name, k, "share_inside", repr(v)] for k, v in summary.inside.items()]
+            rows += [["house", s.name, k, "median", repr(v)] for k, v in summary.medians.items()]
+            rows.append(["house", s.name, "every_item", "share_inside", repr(summary.all_inside)])
     rows += [
         ["connectivity", c.reference.column, k, "value", repr(v)] for k, v in c.reference.connectivity.items()
     ]

@@ -6,9 +6,10 @@ import pytest
 from realistic_indoor.generator import make_generator
 from realistic_indoor.generator.house.bands import Band, band_order, deal, split, tuck, widths
 from realistic_indoor.generator.house.layout import frame
-from realistic_indoor.generator.house.programme import PROGRAMME, Programme, ProgrammeRoom
+from realistic_indoor.generator.house.programme import Programme, ProgrammeRoom
 from realistic_indoor.generator.house.rooms import day_rects
 from realistic_indoor.generator.plan import C, H
+from realistic_indoor.models.house_programme import PROGRAMME
 from realistic_indoor.validator.building_measures import building_measures
 
 

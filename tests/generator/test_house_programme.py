@@ -11,13 +11,8 @@ import pytest
 
 from realistic_indoor.generator import make_generator
 from realistic_indoor.generator.house import MAX_AREA_M2, MIN_AREA_M2
-from realistic_indoor.generator.house.programme import (
-    PROGRAMME,
-    Programme,
-    draw_programme,
-    programme_markdown,
-    row_for,
-)
+from realistic_indoor.generator.house.programme import Programme, draw_programme
+from realistic_indoor.models.house_programme import PROGRAMME, programme_markdown, row_for
 from realistic_indoor.validator.label_inference import size_thresholds
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "generator.md"

@@ -1,7 +1,9 @@
 """Houses with a house's programme: the table of rooms by floor area, its layout, doors and labels.
 
-- :mod:`~realistic_indoor.generator.house.programme`: how many rooms of each kind a house of a
-  given floor area has, and how large (the table of docs/generator.md, with its sources);
+- :mod:`~realistic_indoor.generator.house.programme`: the rooms of a house drawn for its floor
+  area from the programme table and room sizes of
+  :mod:`realistic_indoor.models.house_programme` (the tables of docs/generator.md, with their
+  sources);
 - :mod:`~realistic_indoor.generator.house.layout`: the footprint cut into a day zone, an
   entrance, hallways and bands of rooms;
 - :mod:`~realistic_indoor.generator.house.bands`: rooms side by side along a hallway;

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.house.bands import Band, band_order, deal, widths
-from realistic_indoor.generator.house.programme import SIZES
+from realistic_indoor.models.house_programme import SIZES
 
 if TYPE_CHECKING:
     from realistic_indoor.generator.geometry import Rect

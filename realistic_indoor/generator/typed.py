@@ -71,7 +71,7 @@ class _WingGenerator:
 
     def __call__(self, rng: np.random.Generator) -> Building:
         """A new building of about :attr:`area_m2` drawn with ``rng``."""
-        model = self.type_model.at_area(self.area_m2)
+        model = self.type_model.at_area(self.area_m2, rng)
         if self.layout_name == "wings":
             plan, facts = wing_plan(rng, self.area_m2, model, self.style)
         else:

@@ -16,6 +16,13 @@ from typing import TYPE_CHECKING
 import networkx as nx
 import numpy as np
 
+from realistic_indoor.building.footprint import (
+    CLOSING_M,
+    SHAFT_MAX_M2,
+    aspect_ratio,
+    footprint,
+    footprint_fill,
+)
 from realistic_indoor.building.labels import CIRCULATION_LABELS, ROOM_LABELS
 from realistic_indoor.building.topology import circulation_loops
 from realistic_indoor.validator.connectivity import core_rooms
@@ -38,12 +45,6 @@ __all__ = [
     "footprint",
     "measure_summary",
 ]
-
-CLOSING_M = 0.25
-"""Gaps between room outlines up to twice this (m) are closed in the footprint (walls, slop)."""
-
-SHAFT_MAX_M2 = 25.0
-"""Holes of the footprint up to this area (m2) are filled: shafts and unlabelled spaces, not courts."""
 
 FACADE_MIN_M = 1.0
 """Length of outline (m) a room must share with the footprint's boundary to have a facade."""
@@ -109,31 +110,6 @@ BUILDING_MEASURES: dict[str, str] = {
 """Every building-level measure and what it is, in the order of :class:`BuildingMeasures`."""
 
 
-def footprint(building: Building) -> BaseGeometry:
-    """The building's footprint: the union of its room outlines.
-
-    Gaps between outlines narrower than ``2 * CLOSING_M`` are closed (real plans draw rooms up to
-    the faces of walls), and holes up to :data:`SHAFT_MAX_M2` are filled; larger holes are
-    courtyards and stay.
-
-    Raises:
-        ValueError: If the building has no room.
-    """
-    from shapely import Polygon, unary_union
-
-    if not building.rooms:
-        raise ValueError("a building without rooms has no footprint")
-    union = unary_union([r.polygon for r in building.rooms])
-    closed = union.buffer(CLOSING_M, join_style="mitre").buffer(-CLOSING_M, join_style="mitre")
-    if closed.is_empty:
-        closed = union
-    parts = [
-        Polygon(p.exterior, [h for h in p.interiors if Polygon(h).area > SHAFT_MAX_M2])
-        for p in getattr(closed, "geoms", [closed])
-    ]
-    return unary_union(parts)
-
-
 def building_measures(building: Building) -> BuildingMeasures:
     """Every building-level measure of ``building``.
 
@@ -144,9 +120,9 @@ def building_measures(building: Building) -> BuildingMeasures:
     floor = sum(r.area for r in building.rooms)
     depth = _door_depth(building)
     return BuildingMeasures(
-        footprint_fill=floor / shape.convex_hull.area,
+        footprint_fill=footprint_fill(building, shape),
         isoperimetric_quotient=4 * math.pi * shape.area / shape.length**2,
-        aspect_ratio=_aspect_ratio(shape),
+        aspect_ratio=aspect_ratio(shape),
         circulation_share=sum(r.area for r in building.rooms if r.label in CIRCULATION_LABELS) / floor,
         rooms_per_hectare=len(building.rooms) / (floor / _HECTARE_M2),
         door_depth=depth,
@@ -156,12 +132,6 @@ def building_measures(building: Building) -> BuildingMeasures:
         circulation_loops=circulation_loops(building),
         core_facade_share=_core_facade_share(building, shape),
     )
-
-
-def _aspect_ratio(shape: BaseGeometry) -> float:
-    rect = np.asarray(shape.minimum_rotated_rectangle.exterior.coords)
-    sides = np.hypot(*np.diff(rect[:3], axis=0).T)
-    return float(sides.max() / sides.min()) if sides.min() > 0 else math.inf
 
 
 def _door_depth(building: Building) -> float:

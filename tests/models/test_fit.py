@@ -1,3 +1,4 @@
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -7,6 +8,7 @@ from realistic_indoor.building import ROOM_LABELS, Building, Door, Room, Semanti
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator import generate, make_generator
 from realistic_indoor.models import BuildingTypeModel, fit_model
+from realistic_indoor.models.building_model import RoomDensity
 from realistic_indoor.validator.tables import label_table
 
 
@@ -16,7 +18,7 @@ def offices():
 
 
 def test_fit_model__recovers_the_shares_and_doors_of_its_plans(offices):
-    model, table = fit_model(offices), label_table(offices)
+    model, table = fit_model(offices, skip_misscaled=False), label_table(offices)
     assert model.name == "office"
     for lab in SemanticLabel:
         assert model.labels[lab].share * 100 == pytest.approx(table[lab]["share_pct"])
@@ -126,10 +128,27 @@ def test_fit_model__plans_of_one_size_give_no_scaling():
     assert fit_model(plans, skip_misscaled=False).size_scaling.exponent == 0.0
 
 
+def test_at_area__sizes_rooms_for_the_density_line():
+    # rows of 4 rooms of 6 m, 8 of 8 m, 16 of 10 m (rooms 6 x 5 m ... wide, see _row_of_rooms):
+    # the model's line gives a density per floor area; at_area without a draw scales every
+    # label's area so that 10,000 m2 over the mean room area is that density
+    model = fit_model(
+        [_row_of_rooms(s, n) for s, n in ((6.0, 4), (8.0, 8), (10.0, 16))], skip_misscaled=False
+    )
+    assert model.density.per_hectare > 0
+    for area in (500.0, 2000.0):
+        sized = model.at_area(area)
+        assert 10_000.0 / sized.mean_room_area() == pytest.approx(model.density.at(area))
+        factor = sized.mean_room_area() / model.mean_room_area()
+        for lab in SemanticLabel:
+            assert sized.stats(lab).area_mean == pytest.approx(model.stats(lab).area_mean * factor)
+
+
 def test_at_area__scales_every_label_area_by_the_factor():
     model = fit_model(
         [_row_of_rooms(s, n) for s, n in ((6.0, 4), (8.0, 8), (10.0, 16))], skip_misscaled=False
     )
+    model = replace(model, density=RoomDensity())  # no density: the size scaling sizes the rooms
     ref = model.size_scaling.reference_area_m2
     bigger = model.at_area(ref * 4)
     factor = min(4**model.size_scaling.exponent, 2.0)
@@ -177,3 +196,52 @@ def test_fit_model__ring_share_counts_plans_whose_corridors_close_a_loop():
     ring = Building("school", (*tree.rooms, *extra), tree.doors + doors, {})
     structures = fit_model([tree, tree, ring, ring], skip_misscaled=False).structures
     assert structures.ring_share == pytest.approx(0.5)
+
+
+def _chain(side_m: float, n: int) -> Building:
+    """``n`` square rooms of ``side_m`` in a row, each opening into the next: 10,000 / side^2 rooms per hectare."""
+    rooms = tuple(
+        Room.rectangle(f"r{k}", "medium", "office", (k * side_m, 0.0, (k + 1) * side_m, side_m))
+        for k in range(n)
+    )
+    doors = tuple(
+        Door(f"d{k}", f"r{k}", f"r{k + 1}", (k + 1) * side_m, side_m / 2, 0.9, np.pi / 2)
+        for k in range(n - 1)
+    )
+    return Building("office", rooms, doors, {})
+
+
+def test_fit_model__room_density_line_through_plans_of_one_density():
+    # rooms of 5 x 5 m: 400 rooms per hectare at 100, 200 and 400 m2 (4, 8, 16 rooms): a flat
+    # line at 400 through the geometric mean area 200 m2, no spread; a plan drawn at ten times
+    # the scale (4 rooms per hectare) lies far off the line and is left out of it
+    plans = [_chain(5.0, n) for n in (4, 8, 16)]
+    for density in (
+        fit_model(plans, skip_misscaled=False).density,
+        fit_model([*plans, _chain(50.0, 6)], skip_misscaled=False).density,
+    ):
+        assert density.per_hectare == pytest.approx(400.0)
+        assert density.reference_area_m2 == pytest.approx(200.0)
+        assert density.exponent == 0.0
+        assert density.spread == pytest.approx(0.0)
+
+
+def test_fit_model__room_density_slope_is_held_to_the_square_root_law():
+    # 4 rooms at every size (rooms of 5, 10 and 20 m): density falls as 1 / area (slope -1),
+    # which a type's buildings do not do; the slope is held at -0.5
+    density = fit_model([_chain(side, 4) for side in (5.0, 10.0, 20.0)], skip_misscaled=False).density
+    assert density.exponent == -0.5
+
+
+def test_room_density__draws_stay_within_two_spreads_of_the_line():
+    density = RoomDensity(per_hectare=200.0, reference_area_m2=1000.0, exponent=-0.5, spread=0.3)
+    rng = np.random.default_rng(0)
+    draws = np.array([density.draw(rng, 4000.0) for _ in range(2000)])
+    assert density.at(4000.0) == pytest.approx(100.0)
+    assert np.all(np.abs(np.log(draws / 100.0)) <= 0.6 + 1e-12)
+    assert np.std(np.log(draws / 100.0)) == pytest.approx(0.3, abs=0.03)
+
+
+def test_room_density__a_model_file_with_an_absurd_density_is_one_line():
+    with pytest.raises(ConfigError, match=r"RoomDensity\.spread must be a finite number in"):
+        RoomDensity(per_hectare=200.0, spread=float("nan"))

@@ -198,7 +198,8 @@ def _lay_out(
         else:
             regions, shape = _comb(rng, area, dims, blocks, n_halls, hall_area), "E"
     if regions is None:
-        section, length = draw_section(rng, area, dims, blocks, n_halls, hall_area, bars=bars)
+        aspect = model.footprint.draw_aspect(rng) if model.footprint.aspect_median else None
+        section, length = draw_section(rng, area, dims, blocks, n_halls, hall_area, bars=bars, aspect=aspect)
         regions, shape = paint_block(section, length_for_area(section, length, area)), _shape_name(section)
     plan = rooms_from_regions(
         regions,

@@ -29,6 +29,9 @@ __all__ = ["Hall", "Section", "draw_section", "mean_block_depth"]
 MIN_STRIP_M = 3.0
 """Shallowest strip of rooms a step may leave (m)."""
 
+MIN_CORE_SCALE = 0.8
+"""Shallowest core strip, as a share of the type's strip depth, that slimming a block leaves."""
+
 
 @dataclass(frozen=True)
 class Hall:
@@ -101,11 +104,15 @@ def draw_section(
     n_halls: int,
     hall_area: float,
     bars: int | None = None,
+    aspect: float | None = None,
 ) -> tuple[Section, int]:
     """Draw a block's plan for a floor area; returns it and the length it is first tried at.
 
-    The block's depth holds as many bars as make its proportions the drawn aspect ratio, or
-    ``bars`` if given (the wings of a composed footprint have one).
+    The block's depth holds as many bars as make its proportions the aspect ratio, or ``bars``
+    if given (the wings of a composed footprint have one). A block of two or more bars that
+    comes out squarer than the aspect ratio has its core strips made shallower, down to
+    :data:`MIN_CORE_SCALE` of a facade strip, so a small office can be a slim ring rather
+    than a square one.
 
     Args:
         rng: Random generator.
@@ -114,11 +121,14 @@ def draw_section(
         style: The type's block conventions.
         n_halls: Halls wanted, the entrance lobby first.
         hall_area: Mean hall area (square units).
-        bars: The number of bars, or ``None`` to choose it from a drawn aspect ratio.
+        bars: The number of bars, or ``None`` to choose it from the aspect ratio.
+        aspect: The footprint's length over its depth wanted (the building-type model's draw),
+            or ``None`` to draw it from the style's range.
     """
-    aspect = math.exp(rng.uniform(*(math.log(a) for a in style.aspect)))
+    drawn = math.exp(rng.uniform(*(math.log(a) for a in style.aspect)))
+    aspect = drawn if aspect is None else aspect
     k = _bars_for(area, aspect, dims, style) if bars is None else bars
-    depths = _bar_depths(rng, k, dims.depth, style)
+    depths = _slim_cores(_bar_depths(rng, k, dims.depth, style), area, aspect, dims)
     corridor = dims.corridor
     depth = sum(s + n + corridor for s, n in depths)
     length = max(round(area / depth), 2 * corridor)
@@ -158,6 +168,30 @@ def _bars_for(area: int, aspect: float, dims: Dims, style: BlockStyle) -> int:
         return abs(abs(math.log(length / depth)) - math.log(aspect))
 
     return min(range(1, 40), key=miss)
+
+
+def _slim_cores(depths: list[tuple[int, int]], area: int, aspect: float, dims: Dims) -> list[tuple[int, int]]:
+    """The bars' strip depths, the core strips made shallower where the block is squarer than ``aspect``.
+
+    The block's depth is brought towards ``sqrt(area / aspect)`` by scaling every core strip
+    alike, none below ``MIN_CORE_SCALE`` of the type's strip depth; facade strips keep theirs.
+    """
+    if len(depths) < 2:
+        return depths
+    corridors = len(depths) * dims.corridor
+    facades = depths[0][0] + depths[-1][1]
+    cores = sum(s + n for s, n in depths) - facades
+    depth = corridors + facades + cores
+    if cores <= 0 or area / depth >= aspect * depth:
+        return depths
+    floor = round(MIN_CORE_SCALE * dims.depth)
+    scale = max((math.sqrt(area / aspect) - corridors - facades) / cores, 0.0)
+
+    def slim(d: int) -> int:
+        return max(min(round(d * scale), d), min(floor, d))
+
+    last = len(depths) - 1
+    return [(s if j == 0 else slim(s), n if j == last else slim(n)) for j, (s, n) in enumerate(depths)]
 
 
 def _bar_depths(rng: np.random.Generator, k: int, depth: int, style: BlockStyle) -> list[tuple[int, int]]:

@@ -143,6 +143,11 @@ def _overlap(t0: int, t1: int, spans: list[tuple[int, int]]) -> int:
     return max((min(t1, b) - max(t0, a) for a, b in spans), default=0)
 
 
+BIG_STRETCH = 1.6
+"""How much longer than the axes-ratio limit a big room may run along a strip: open-plan offices
+and classrooms take a shallow strip's length where a deep one would give them depth."""
+
+
 def _room_width(rng: np.random.Generator, ctx: BayContext, label: SemanticLabel, depth: int) -> int:
     stats = ctx.model.stats(label)
     area = area_to_units(stats.sample_area(rng, 0.45 * stats.area_mean, 2.6 * stats.area_mean))
@@ -150,7 +155,9 @@ def _room_width(rng: np.random.Generator, ctx: BayContext, label: SemanticLabel,
     high = (
         max(3 * depth, to_units(10.0))
         if label is S
-        else min(max(3 * depth, to_units(10.0)), depth * ctx.max_axes_ratio)
+        else min(
+            max(3 * depth, to_units(10.0)), depth * ctx.max_axes_ratio * (BIG_STRETCH if label is B else 1.0)
+        )
     )
     return int(min(max(area / depth, low), max(high, low)))
 

@@ -213,7 +213,7 @@ class RoomDensity:
 
     def draw(self, rng: np.random.Generator, area_m2: float) -> float:
         """One building's rooms per hectare: the line's, times a log-normal spread (within 2 sigma)."""
-        deviation = min(max(rng.normal(0.0, 1.0), -2.0), 2.0) * self.spread if self.spread > 0 else 0.0
+        deviation = _within_two_sigma(rng) * self.spread if self.spread > 0 else 0.0
         return self.at(area_m2) * math.exp(deviation)
 
 
@@ -243,8 +243,12 @@ class FootprintHabits:
 
     def draw_aspect(self, rng: np.random.Generator) -> float:
         """One building's aspect ratio: log-normal about the median, within 2 sigma, at least 1."""
-        deviation = min(max(rng.normal(0.0, 1.0), -2.0), 2.0) * self.aspect_spread
-        return max(self.aspect_median * math.exp(deviation), 1.0)
+        return max(self.aspect_median * math.exp(_within_two_sigma(rng) * self.aspect_spread), 1.0)
+
+
+def _within_two_sigma(rng: np.random.Generator) -> float:
+    """A standard normal draw clipped to [-2, 2]: how far one building lies from its type's line."""
+    return min(max(float(rng.normal(0.0, 1.0)), -2.0), 2.0)
 
 
 DENSITY_FACTOR_LIMITS = (0.25, 4.0)

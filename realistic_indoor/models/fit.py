@@ -186,7 +186,8 @@ def _room_density(plans: list[Building]) -> RoomDensity:
     :data:`DENSITY_EXPONENT_LIMITS`, the reference area the plans' geometric mean floor area,
     and the line's density there the median of the plans' densities brought to that area along
     the slope (a median: the plans' densities are skewed, and the validator compares medians).
-    Plans further than :data:`OUTLIER_MADS` from a first line are left out of it. The spread
+    Plans further than :data:`OUTLIER_MADS` from the line through all plans are left out, and
+    the test is made once more against the line through those kept. The spread
     is the residual standard deviation of the plans kept (two degrees of freedom taken).
     Fewer than three plans, or plans all of one size, give no density.
     """

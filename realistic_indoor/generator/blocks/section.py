@@ -125,6 +125,7 @@ def draw_section(
         aspect: The footprint's length over its depth wanted (the building-type model's draw),
             or ``None`` to draw it from the style's range.
     """
+    # drawn even where ``aspect`` is given, so the rest of the section takes the same draws
     drawn = math.exp(rng.uniform(*(math.log(a) for a in style.aspect)))
     aspect = drawn if aspect is None else aspect
     k = _bars_for(area, aspect, dims, style) if bars is None else bars

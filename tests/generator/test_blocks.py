@@ -1,5 +1,7 @@
 """The block layout: compact footprints, strips that tile the block, the options that choose it."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from shapely.geometry import box
@@ -10,6 +12,7 @@ from realistic_indoor.generator import make_generator
 from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS
 from realistic_indoor.generator.blocks.paint import paint_block
 from realistic_indoor.generator.blocks.section import Hall, Section, draw_section
+from realistic_indoor.generator.typed import OfficeGenerator
 from realistic_indoor.generator.wings.sizing import Dims
 from realistic_indoor.validator.building_measures import building_measures
 
@@ -44,6 +47,45 @@ def test_paint__a_hall_across_the_core_joins_both_corridors():
     [(_, [hall])] = r.halls
     assert hall[1] == 80 and hall[3] == 220  # from corridor 0's side to corridor 1's
     assert hall[2] - hall[0] == 100  # 140 m2 over a 14 m deep core: 10 m wide
+
+
+def test_paint__a_deep_core_section_is_one_strip_opening_onto_one_corridor():
+    # the ring above with one crossing at the middle of the inner run (8..42 m: at 25 m, 2 m
+    # wide, 24..26 m); the west section (8..24 m) is one strip as deep as the core (14 m)
+    s = Section(((60, 70), (70, 60)), 20, 60, (0.5,), (), (), (), ((0, 0, "N"),))
+    r = paint_block(s, 500)
+    deep = [b for b in r.bays if b.rect[1] == 80 and b.rect[3] == 220]
+    assert [(b.rect, b.access) for b in deep] == [((80, 80, 240, 220), "N")]
+    core = [b.rect for b in r.bays if b.rect[1] >= 80 and b.rect[3] <= 220]
+    assert sorted(core) == [(80, 80, 240, 220), (260, 80, 420, 150), (260, 150, 420, 220)]
+    union = unary_union([box(*x) for x in _rects(r)])
+    assert union.area == pytest.approx(500 * 300)
+
+
+def _deepest_big_and_rooms(monkeypatch, deep_core_p: float) -> list[tuple[str, float, int]]:
+    """Per seed: the footprint's shape, the big room with the longest short side (m), the rooms."""
+    monkeypatch.setattr(OfficeGenerator, "blocks", replace(OFFICE_BLOCKS, deep_core_p=deep_core_p))
+    gen = make_generator("office", area_m2=2200.0)
+    out = []
+    for seed in range(8):
+        b = gen(np.random.default_rng(seed))
+        sides = [
+            min(x1 - x0, y1 - y0)
+            for x0, y0, x1, y1 in (r.polygon.bounds for r in b.rooms if r.label.value == "big")
+        ]
+        out.append((b.metadata["shape"], max(sides), len(b.rooms)))
+    return out
+
+
+def test_blocks__deep_core_strips_make_fewer_and_deeper_big_rooms(monkeypatch):
+    # a facade strip is about 5-7 m deep, a ring's core about twice that: rooms as deep as
+    # the core are only possible where a core section is one strip
+    shallow = _deepest_big_and_rooms(monkeypatch, 0.0)
+    deep = _deepest_big_and_rooms(monkeypatch, 1.0)
+    rings = [k for k, (shape, _, _) in enumerate(deep) if shape.startswith("ring")]
+    assert len(rings) >= 4
+    assert all(deep[k][2] < shallow[k][2] for k in rings)
+    assert np.median([deep[k][1] for k in rings]) >= np.median([shallow[k][1] for k in rings]) + 2.0
 
 
 def test_paint__blocks_drawn_for_many_areas_tile_without_overlap_or_void():

@@ -55,17 +55,21 @@ def paint_block(s: Section, length: int) -> Regions:
     regions = Regions()
     regions.corridors = _corridors(s, f)
     courts = _courts(s, f)
+    deep = _deep(s, f)
     regions.holes = [rect for rects in courts.values() for rect in rects]
     taken: dict = {"S": [], "N": []}
     for j in range(s.bars - 1):
-        blocked = list(f.crossings) + [(r[0], r[2]) for r in courts.get(j, [])]
+        blocked = list(f.crossings) + [
+            (r[0], r[2]) for r in courts.get(j, []) + [b.rect for b in deep.get(j, [])]
+        ]
         taken[(j, "lo")], taken[(j, "hi")] = blocked, list(blocked)
     apart: dict = {}
     for i, hall in enumerate(s.halls):
         rect = _place_hall(s, f, hall, taken, apart)
         if rect is not None:
             regions.halls.append((("hall", i), [rect]))
-    regions.bays = _facade_bays(s, f, taken) + _core_bays(s, f, taken) + _end_bays(s, f)
+    deep_bays = [bay for bays in deep.values() for bay in bays]
+    regions.bays = _facade_bays(s, f, taken) + _core_bays(s, f, taken) + deep_bays + _end_bays(s, f)
     shapes = (
         regions.corridors + [r for _, rects in regions.halls for r in rects] + [b.rect for b in regions.bays]
     )
@@ -104,6 +108,18 @@ def _courts(s: Section, f: _Frame) -> dict[int, list[Rect]]:
             y0, y1 = f.core(j, s.corridor)
             a, b = stretches[i]
             out.setdefault(j, []).append((a, y0, b, y1))
+    return out
+
+
+def _deep(s: Section, f: _Frame) -> dict[int, list[Bay]]:
+    """The deep strips of each core: one bay across the core's depth per deep section."""
+    out: dict[int, list[Bay]] = {}
+    stretches = _sections(f)
+    for j, i, side in s.deep:
+        if i < len(stretches):
+            y0, y1 = f.core(j, s.corridor)
+            a, b = stretches[i]
+            out.setdefault(j, []).append(Bay((a, y0, b, y1), "x", side))
     return out
 
 

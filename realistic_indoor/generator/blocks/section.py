@@ -69,6 +69,10 @@ class Section:
             crossings is a courtyard.
         steps: ``(side, f0, f1, depth)``: the facade strip on ``side`` (``"S"``/``"N"``) is
             ``depth`` shallower from fraction ``f0`` to ``f1`` of its length.
+        deep: ``(core, section, side)``: the section-th stretch of core ``core`` between
+            crossings is one strip as deep as the core, its rooms opening onto the corridor on
+            ``side`` (``"S"`` or ``"N"``): where real offices put open-plan rooms and meeting
+            rooms, as deep as they are wide.
     """
 
     depths: tuple[tuple[int, int], ...]
@@ -78,6 +82,7 @@ class Section:
     halls: tuple[Hall, ...]
     courts: tuple[tuple[int, int], ...]
     steps: tuple[tuple[str, float, float, int], ...]
+    deep: tuple[tuple[int, int, str], ...] = ()
 
     @property
     def depth(self) -> int:
@@ -139,7 +144,8 @@ def draw_section(
     halls = _halls(rng, k, n_halls, hall_area, style)
     courts = _courts(rng, k, len(crossings) + 1, inner, style, depths, corridor)
     steps = _steps(rng, depths, style)
-    return Section(tuple(depths), corridor, end, crossings, halls, courts, steps), length
+    deep = _deep_cores(rng, k, len(crossings) + 1, style, courts)
+    return Section(tuple(depths), corridor, end, crossings, halls, courts, steps, deep), length
 
 
 def mean_block_depth(dims: Dims, style: BlockStyle, bars: int) -> float:
@@ -248,6 +254,21 @@ def _courts(
         return ()
     pairs = [(j, i) for j in range(k - 1) for i in range(sections) if rng.random() < style.court_p]
     return tuple(pairs[: max(0, (k - 1) * sections - 1)])
+
+
+def _deep_cores(
+    rng: np.random.Generator, k: int, sections: int, style: BlockStyle, courts: tuple[tuple[int, int], ...]
+) -> tuple[tuple[int, int, str], ...]:
+    """Core sections (not courtyards) that are one deep strip of rooms, and the side they open onto."""
+    if k == 1 or style.deep_core_p <= 0:
+        return ()
+    out = []
+    for j in range(k - 1):
+        for i in range(sections):
+            side = "S" if rng.random() < 0.5 else "N"
+            if rng.random() < style.deep_core_p and (j, i) not in courts:
+                out.append((j, i, side))
+    return tuple(out)
 
 
 def _steps(

@@ -23,6 +23,9 @@ class BlockStyle:
         notch_p: Probability that a facade strip is left out at one end of the block, the
             corridor running along the facade there (an L- or U-shaped footprint).
         court_p: Probability that a core section is a courtyard instead of rooms.
+        deep_core_p: Probability that a core section (not a courtyard) is one strip as deep
+            as the core, its rooms opening onto one corridor, instead of two strips back to
+            back: open-plan and meeting rooms as deep as they are wide.
         core_hall_p: Share of the halls (after the lobby) set across a core, joining the two
             corridors beside it; the others open onto a facade strip.
         hall_area_scale: The halls' area over the model's mean hall area.
@@ -75,6 +78,7 @@ class BlockStyle:
     step_m: tuple[float, float] = (1.0, 2.5)
     notch_p: float = 0.2
     court_p: float = 0.0
+    deep_core_p: float = 0.0
     core_hall_p: float = 0.5
     hall_area_scale: float = 1.0
     through_hall_p: float = 0.3
@@ -100,6 +104,7 @@ OFFICE_BLOCKS = BlockStyle(
     step_p=0.6,
     step_m=(1.0, 4.0),
     notch_p=0.5,
+    deep_core_p=0.7,
     core_hall_p=0.3,
     compositions={"I": 0.75, "L": 0.15, "T": 0.1},
 )

@@ -270,7 +270,10 @@ def _make_unit(kind: str, t: int, rng: np.random.Generator, ctx: BayContext, dep
         width = room + w if kind == "notch" else max(room, w + MIN_ROOM)
         return Unit(kind, t, t + width, label, {"w": w, "d": d, "far": bool(rng.random() < 0.5)})
     label = {"M": M, "B": B, "S": S}[kind]
-    return Unit(kind, t, t + _room_width(rng, ctx, label, depth), label)
+    width = _room_width(rng, ctx, label, depth)
+    if label is M and label_for_area(ctx.model, width * depth) is B:
+        kind, label = "B", B  # a deep strip's rooms are big however they were drawn
+    return Unit(kind, t, t + width, label)
 
 
 def _core_layout(u: Unit) -> tuple[int, int]:

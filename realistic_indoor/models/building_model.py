@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     import numpy as np
 
 __all__ = [
+    "COMPOSED_FILL",
     "REAL_MODEL_TYPES",
     "BuildingTypeModel",
     "DoorHabits",
@@ -217,6 +218,11 @@ class RoomDensity:
         return self.at(area_m2) * math.exp(deviation)
 
 
+COMPOSED_FILL = 0.9
+"""Convex fill below which a footprint counts as composed (wings, an L, T or U) rather than one
+block: the block layout's single blocks, steps and notches included, keep 0.86 or more."""
+
+
 @dataclass(frozen=True)
 class FootprintHabits:
     """How elongated the footprints of real plans of a type are: their aspect ratios, plan by plan.
@@ -231,15 +237,21 @@ class FootprintHabits:
         aspect_median: Geometric mean aspect ratio of the plans (>= 1); 0 for none (the
             layout's own range).
         aspect_spread: Standard deviation of the plans' log aspect ratios.
+        composed_share: Share of the plans whose footprint is not one compact block: convex
+            fill (floor over convex hull area) below :data:`COMPOSED_FILL`, as an L, T, U or a
+            cluster of wings has; -1 for none (the layout's own frequencies).
     """
 
     aspect_median: float = 0.0
     aspect_spread: float = 0.0
+    composed_share: float = -1.0
 
     def __post_init__(self) -> None:
         if self.aspect_median != 0.0:
             require_between("FootprintHabits", "aspect_median", self.aspect_median, 1.0, 20.0, "")
         require_between("FootprintHabits", "aspect_spread", self.aspect_spread, 0.0, 3.0, "")
+        if self.composed_share != -1.0:
+            require_between("FootprintHabits", "composed_share", self.composed_share, 0.0, 1.0, "")
 
     def draw_aspect(self, rng: np.random.Generator) -> float:
         """One building's aspect ratio: log-normal about the median, within 2 sigma, at least 1."""

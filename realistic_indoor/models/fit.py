@@ -18,6 +18,7 @@ from realistic_indoor.building.labels import (
 from realistic_indoor.building.topology import circulation_loops
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.models.building_model import (
+    COMPOSED_FILL,
     BuildingTypeModel,
     DoorHabits,
     FootprintHabits,
@@ -167,15 +168,21 @@ dentist's office: 27 rooms per hectare, 25 rooms on 9,261 m2) is not a habit of 
 
 
 def _footprint_habits(plans: list[Building]) -> FootprintHabits:
-    """Geometric mean and log spread of the plans' footprint aspect ratios (none under 3 plans)."""
-    from realistic_indoor.building.footprint import aspect_ratio, footprint
+    """The plans' footprint aspect ratios (geometric mean, log spread) and composed share.
 
-    logs = [math.log(min(aspect_ratio(footprint(b)), 20.0)) for b in plans if b.rooms]
-    if len(logs) < 3:
+    None under 3 plans.
+    """
+    from realistic_indoor.building.footprint import aspect_ratio, footprint, footprint_fill
+
+    shapes = [(b, footprint(b)) for b in plans if b.rooms]
+    if len(shapes) < 3:
         return FootprintHabits()
+    logs = [math.log(min(aspect_ratio(shape), 20.0)) for _, shape in shapes]
+    composed = [footprint_fill(b, shape) < COMPOSED_FILL for b, shape in shapes]
     return FootprintHabits(
         aspect_median=round(max(math.exp(float(np.mean(logs))), 1.0), 4),
         aspect_spread=round(min(float(np.std(logs, ddof=1)), 3.0), 4),
+        composed_share=round(float(np.mean(composed)), 4),
     )
 
 

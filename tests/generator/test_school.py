@@ -123,11 +123,13 @@ def test_more_annexes__canteen_from_1500_auditorium_from_2500_both_certain_from_
 
 
 def test_large_schools__get_a_canteen_and_an_auditorium_beside_the_gym_mostly():
-    # both come in certainly from 6,000 m2; an annex that finds no free place is left out
+    # both come in certainly from 6,000 m2; an annex that finds no free place is left out: an
+    # auditorium finds one in about 39% of 9,000 m2 schools (400 seeds; 7 of the 17 shared real
+    # schools of 2,700 m2 and more have one), so 30 seeds give 12 +- 3
     schools = _large_schools(9000.0)
     for function, low_m2, high_m2, share in (
         ("canteen", 200.0, 400.0, 0.5),
-        ("conference", 450.0, 850.0, 0.4),
+        ("conference", 450.0, 850.0, 0.25),
     ):
         with_it = [b for b in schools if _annexes(b, function, low_m2, high_m2)]
         assert len(with_it) >= share * len(schools), function

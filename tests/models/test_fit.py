@@ -8,7 +8,7 @@ from realistic_indoor.building import ROOM_LABELS, Building, Door, Room, Semanti
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator import generate, make_generator
 from realistic_indoor.models import BuildingTypeModel, fit_model
-from realistic_indoor.models.building_model import RoomDensity
+from realistic_indoor.models.building_model import FootprintHabits, RoomDensity
 from realistic_indoor.validator.tables import label_table
 
 
@@ -224,6 +224,39 @@ def test_fit_model__room_density_line_through_plans_of_one_density():
         assert density.reference_area_m2 == pytest.approx(200.0)
         assert density.exponent == 0.0
         assert density.spread == pytest.approx(0.0)
+
+
+def _ell(side_m: float) -> Building:
+    """Three square rooms of ``side_m`` in an L, each opening into the next.
+
+    Floor 3 side^2, convex hull 3.5 side^2 (the square of 2 side less the half-square cut off
+    at the L's open corner): convex fill 6/7 = 0.857.
+    """
+    s = side_m
+    rooms = (
+        Room.rectangle("a", "medium", "office", (0.0, 0.0, s, s)),
+        Room.rectangle("b", "medium", "office", (s, 0.0, 2 * s, s)),
+        Room.rectangle("c", "medium", "office", (0.0, s, s, 2 * s)),
+    )
+    doors = (
+        Door("d0", "a", "b", s, s / 2, 0.9, np.pi / 2),
+        Door("d1", "a", "c", s / 2, s, 0.9, 0.0),
+    )
+    return Building("office", rooms, doors, {})
+
+
+def test_fit_model__composed_share_counts_footprints_that_are_not_one_block():
+    # three rows of rooms (convex fill 1) and one L (6/7, below COMPOSED_FILL 0.9): a quarter
+    plans = [_chain(5.0, n) for n in (4, 8, 16)] + [_ell(5.0)]
+    assert fit_model(plans, skip_misscaled=False).footprint.composed_share == pytest.approx(0.25)
+    assert fit_model(plans[:3], skip_misscaled=False).footprint.composed_share == 0.0
+
+
+def test_footprint_habits__a_model_file_without_the_share_leaves_it_to_the_layout():
+    # model files written before composed_share read as -1: the layout's own frequencies
+    assert FootprintHabits(aspect_median=1.5, aspect_spread=0.3).composed_share == -1.0
+    with pytest.raises(ConfigError, match="composed_share"):
+        FootprintHabits(composed_share=1.5)
 
 
 def test_fit_model__room_density_slope_is_held_to_the_square_root_law():

@@ -1,9 +1,10 @@
 """Footprints of several blocks: a main bar with wings at right angles (L, T, U and E shapes).
 
 Real schools, and some offices, are double-loaded bars joined at right angles rather than one
-deep block. A composed footprint is a main bar (one corridor, rooms on both sides) with one
-wing (an L at an end, a T in between), two (a U, one at each end) or more (an E or comb, evenly
-spaced: large schools without a ring corridor) standing on its north facade. Each wing is a bar
+deep block. A composed footprint is a main bar (one corridor, rooms on both sides; for an L, T
+or U, a ring with the style's ``ring_main_p``, as offices with a wing are) with one wing (an L
+at an end, a T in between), two (a U, one at each end) or more (an E or comb, evenly spaced:
+large schools without a ring corridor) standing on its north facade. Each wing is a bar
 too, turned a quarter: its corridor meets the main corridor through a short corridor cut across
 the main bar's north strip, and runs on to the wing's far end.
 """
@@ -63,7 +64,8 @@ def compose(
     """
     n_wings = wings if shape == "E" and wings else WINGS[shape]
     main_area = round(area * _main_share(rng, n_wings, area, dims, style))
-    main, guess = draw_section(rng, main_area, dims, style, max(n_halls - n_wings, 1), hall_area, bars=1)
+    bars = 2 if n_wings < 3 and rng.random() < style.ring_main_p else 1
+    main, guess = draw_section(rng, main_area, dims, style, max(n_halls - n_wings, 1), hall_area, bars=bars)
     main = _north_free(main)
     length = length_for_area(main, guess, main_area)
     if length > to_units(style.max_bar_m):
@@ -74,6 +76,8 @@ def compose(
         wing, guess = draw_section(rng, wing_area, dims, style, 1, hall_area, bars=1)
         wing_length = length_for_area(wing, guess, wing_area)
         x = _wing_x(rng, shape, k, length, wing.depth, n_wings)
+        if x is not None and main.bars > 1:
+            x = _on_the_run(x, main, length, wing)
         if x is None or wing_length > to_units(style.max_bar_m):
             return None
         _attach(regions, main, wing, paint_block(wing, wing_length), x, k)
@@ -83,11 +87,11 @@ def compose(
 def _main_share(rng: np.random.Generator, n_wings: int, area: int, dims: Dims, style: BlockStyle) -> float:
     """The main bar's share of the area.
 
-    Drawn for an L, T or U; for an E, what makes the main bar just long enough for its wings
+    Drawn for an L or T (the style's ``main_share``) or a U; for an E, what makes the main bar just long enough for its wings
     and the courts between them.
     """
     if n_wings == 1:
-        return rng.uniform(0.5, 0.7)
+        return rng.uniform(*style.main_share)
     if n_wings == 2:
         return rng.uniform(0.45, 0.6)
     bar = mean_block_depth(dims, style, 1)
@@ -120,11 +124,27 @@ def _wing_x(rng: np.random.Generator, shape: str, k: int, length: int, depth: in
     return round((length - depth) * rng.uniform(0.3, 0.7))
 
 
+def _on_the_run(x: int, main: Section, length: int, wing: Section) -> int | None:
+    """``x`` moved so the wing's corridor meets the ring's north corridor, not an end strip.
+
+    A ring's long corridors run between its end strips; the short corridor joining a wing
+    crosses the north facade strip there. ``None`` where the run is too short for it.
+    """
+    lo, hi = main.end_depth, length - main.end_depth - wing.corridor
+    if hi < lo:
+        return None
+    corridor_x = min(max(x + wing.depths[0][0], lo), hi)
+    return corridor_x - wing.depths[0][0]
+
+
 def _attach(regions: Regions, main: Section, wing: Section, painted: Regions, x: int, k: int) -> None:
-    """Turn wing ``k`` a quarter, stand it on the main bar's north facade at ``x``, join the corridors."""
+    """Turn wing ``k`` a quarter, stand it on the main block's north facade at ``x``, join the corridors.
+
+    The main block is one bar or a ring; the wing's corridor meets its northmost corridor.
+    """
     top = main.depth
     corridor_x = x + wing.depths[0][0]
-    line_top = main.depths[0][0] + main.corridor
+    line_top = top - main.depths[-1][1]
     connector = (corridor_x, line_top, corridor_x + wing.corridor, top)
     regions.bays = _cut_bays(regions.bays, connector)
     regions.corridors.append(connector)

@@ -168,6 +168,23 @@ def _comb(
     return None
 
 
+def _draw_composition(rng: np.random.Generator, blocks: BlockStyle, composed_share: float) -> str:
+    """The footprint's composition: ``"I"`` (one block) or one of the style's L, T, U.
+
+    With a model's share of composed footprints (``composed_share`` >= 0), one block comes
+    with probability ``1 - composed_share`` and the style's weights choose among the others;
+    otherwise the style's weights choose among all.
+    """
+    names = sorted(blocks.compositions)
+    if composed_share >= 0:
+        others = [n for n in names if n != "I"]
+        if not others or rng.random() >= composed_share:
+            return "I"
+        names = others
+    weights = [blocks.compositions[n] for n in names]
+    return names[choice_index(rng, [w / sum(weights) for w in weights])]
+
+
 def _lay_out(
     rng: np.random.Generator,
     area_m2: float,
@@ -187,9 +204,7 @@ def _lay_out(
     area = round(area_to_units(area_m2 - annex_m2))
     n_halls = int(rng.poisson(model.shares()[H] * (area_m2 - annex_m2) / model.mean_room_area()))
     hall_area = area_to_units(model.stats(H).area_mean)
-    names = sorted(blocks.compositions)
-    weights = [blocks.compositions[n] for n in names]
-    shape = names[choice_index(rng, [w / sum(weights) for w in weights])]
+    shape = _draw_composition(rng, blocks, model.footprint.composed_share)
     regions = compose(rng, shape, area, dims, blocks, n_halls, hall_area) if shape != "I" else None
     bars = None
     if regions is None and blocks.ring_share and _no_ring(rng, model):

@@ -42,6 +42,9 @@ class BlockStyle:
             with a corridor door each and a door between them: real plans' connected rooms are
             mostly reached through each other, so most of their rooms keep one door.
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
+        main_share: Range of the main block's share of the floor area in an L or T.
+        ring_main_p: Probability that the main block of an L, T or U is a ring (two corridors
+            around a core) rather than one bar; its wings stay bars.
         ring_share: Follow the model's share of buildings with a ring corridor
             (``LocalStructures.ring_share``): a block drawn without one is one double-loaded
             bar, or an E (a main bar with 3 or more wings) where one bar would be too long.
@@ -88,6 +91,8 @@ class BlockStyle:
     max_axes_ratio: float = 1.6
     suites: bool = True
     max_bar_m: float = 90.0
+    main_share: tuple[float, float] = (0.5, 0.7)
+    ring_main_p: float = 0.0
     annex_room_m: tuple[tuple[float, float], float] = ((2.6, 3.4), 3.5)
     annex_area_m2: tuple[float, float] | None = None
     more_annexes: tuple[tuple[str, tuple[float, float], tuple[float, float]], ...] = ()
@@ -107,6 +112,8 @@ OFFICE_BLOCKS = BlockStyle(
     deep_core_p=0.7,
     core_hall_p=0.3,
     compositions={"I": 0.75, "L": 0.15, "T": 0.1},
+    main_share=(0.65, 0.85),
+    ring_main_p=0.7,
 )
 """Offices: compact deep plans, ring corridors around cores of rooms and halls."""
 

@@ -28,7 +28,7 @@ from realistic_indoor.files import write_text
 from realistic_indoor.generator import generate_like
 from realistic_indoor.io import load
 from realistic_indoor.models import fit_model
-from realistic_indoor.validator.building_measures import building_measures
+from realistic_indoor.validator.building_measures import building_measures, spread
 from realistic_indoor.validator.reference import paper_reference
 from realistic_indoor.validator.score import realism_score
 from realistic_indoor.validator.two_sample import split_half_accuracy, two_sample_test
@@ -76,12 +76,6 @@ def _quartiles(values: list[float]) -> list[float]:
     return [float(v) for v in np.nanpercentile(values, [25, 50, 75])]
 
 
-def _spread(values: list[float]) -> float:
-    """Spread between buildings: the interquartile range over the median (0 when all alike)."""
-    q1, median, q3 = _quartiles(values)
-    return float((q3 - q1) / abs(median)) if median else float("nan")
-
-
 def compare(real: list, repeats: list[list], kind: str) -> dict:
     """Measures, classifier accuracies and Table-1 scores of the real plans and their twins.
 
@@ -101,8 +95,8 @@ def compare(real: list, repeats: list[list], kind: str) -> dict:
             "twins": q_twin,
             "inside": q_real[0] <= q_twin[1] <= q_real[2],
             "gap": q_twin[1] / q_real[1] - 1 if q_real[1] else float("nan"),
-            "spread_real": _spread(v_real),
-            "spread_twins": _spread(v_twin),
+            "spread_real": spread(*q_real),
+            "spread_twins": spread(*q_twin),
         }
     classifier = {}
     for features in ("building", "room", "all"):

@@ -28,10 +28,18 @@ from realistic_indoor.envs.rewards import EXPLORE_TERMS, term_weights
 from realistic_indoor.envs.source import episode_building
 from realistic_indoor.envs.vector_views import RENDER_MODES, SubEnvViews, require_render_mode
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.batch import RESET, SKIP, STEP, Batch, step_batch, step_batch_serial
-from realistic_indoor.sim.disc_physics import THETA, X, Y, drive_params
-from realistic_indoor.sim.lidar import beam_offsets, draw_noise
-from realistic_indoor.sim.mapping import beam_table
+from realistic_indoor.sim.batch import (
+    RESET,
+    SKIP,
+    STEP,
+    Batch,
+    StepOutputs,
+    step_batch,
+    step_batch_serial,
+    step_constants,
+)
+from realistic_indoor.sim.disc_physics import THETA, X, Y
+from realistic_indoor.sim.lidar import draw_noise
 from realistic_indoor.sim.world import World
 
 __all__ = ["INFO_KEYS", "ROBOTS_PER_THREAD", "BatchedExploreEnv", "step_threads"]
@@ -151,11 +159,9 @@ class BatchedExploreEnv(VectorEnv):
 
     def _init_arrays(self) -> None:
         c, n = self.config, self.num_envs
-        self._cos, self._sin, closed = beam_table(beam_offsets(c.lidar))
-        self._lidar = np.array([c.lidar.max_range_m, c.lidar.noise_std_m, float(closed)])
-        self._pool, pixel = c.local_map.pooling(c.world.resolution_m)
-        self._local = np.array([self._pool, pixel])
-        self._params = drive_params(c.robot, c.world.wall_thickness_m)
+        self._constants = step_constants(c.robot, c.world, c.lidar, c.local_map)
+        self._params = self._constants.params
+        self._pool = int(self._constants.local[0])
         self._batch = Batch(n)
         self._mode = np.zeros(n, dtype=np.int64)
         self._commands = np.zeros((n, 2))
@@ -165,6 +171,7 @@ class BatchedExploreEnv(VectorEnv):
         self._local_map = np.zeros((n, 1, s, s), dtype=np.uint8)
         self._terms = np.zeros((n, len(self.term_names)))
         self._motion = np.zeros(n)
+        self._out = StepOutputs(self._scan_m, self._local_map, self._terms, self._motion)
         self._steps = np.zeros(n, dtype=np.int64)
         self._path = np.zeros(n)
         self._collisions = np.zeros(n, dtype=np.int64)
@@ -497,12 +504,7 @@ class BatchedExploreEnv(VectorEnv):
             numba.set_num_threads(outer)
 
     def _step_batch(self, b: Batch, kernel: Any) -> None:
-        kernel(
-            self._mode, self._commands, b.phys, b.robot_building, b.building_meta, b.skips, b.targets,
-            b.segments, b.seg_start, b.seg_items, b.seg_origin, b.grids, b.pooled, b.todo, b.walls, b.observed,
-            self._params, self._cos, self._sin, self._noise, self._lidar, self._local,
-            self._scan_m, self._local_map, self._terms, self._motion,
-        )  # fmt: skip
+        b.step(kernel, self._mode, self._commands, self._noise, self._constants, self._out)
 
     def _pose(self, k: int) -> tuple[float, float, float]:
         """Sub-environment ``k``'s robot pose ``(x m, y m, heading rad)``."""

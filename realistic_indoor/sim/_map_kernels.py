@@ -564,3 +564,44 @@ def scatter_global(pooled, rx, ry, cos0, sin0, scale, free, wall):  # pragma: no
                     wall[r, c] = 255
                 else:
                     free[r, c] = 255
+
+
+@njit(cache=True, nogil=True)
+def merge_maps(grid, pooled, k, targets, todo, walls, src_todo, src_walls):  # pragma: no cover - compiled
+    """Mark in a map what another map of the same world knows and it does not (a map merge).
+
+    The cells the other map marked free (its to-do bit cleared, this map's still set) become
+    free here, and its marked walls occupied, by the rules the scans follow (pooled cells
+    included), with this map's bits cleared for them. Word by word: only the cells that differ
+    are visited.
+
+    Returns:
+        The reachable floor cells newly marked free here (what :attr:`Batch.observed` counts).
+    """
+    h, n_words = todo.shape
+    reachable = 0
+    for r in range(h):
+        for word in range(n_words):
+            bits = todo[r, word] & ~src_todo[r, word]
+            todo[r, word] ^= bits
+            reachable += _mark_bits(grid, pooled, k, targets, r, word * WORD, bits, MAPPED_FREE)
+            bits = walls[r, word] & ~src_walls[r, word]
+            walls[r, word] ^= bits
+            _mark_bits(grid, pooled, k, targets, r, word * WORD, bits, MAPPED_OCCUPIED)
+    return reachable
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _mark_bits(grid, pooled, k, targets, r, base, bits, state):  # pragma: no cover - compiled
+    """Mark ``state`` on the cells of row ``r`` whose bits are set (column ``base`` + bit); the reachable free ones."""
+    reachable = 0
+    while bits != 0:
+        low = bits & -bits  # the lowest set bit; the product wraps, ">>" keeps the sign
+        c = base + _LOWEST_BIT[((low * _DE_BRUIJN) >> 58) & 63]
+        bits ^= low
+        grid[r, c] = state
+        if state == MAPPED_OCCUPIED or pooled[r // k, c // k] == MAPPED_UNKNOWN:
+            pooled[r // k, c // k] = state
+        if state == MAPPED_FREE and targets[r, c] == TRUTH_REACHABLE:
+            reachable += 1
+    return reachable

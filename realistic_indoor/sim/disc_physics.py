@@ -21,6 +21,12 @@ same command sequences in the same buildings. What is left of the difference com
 order in which the solver visits simultaneous contacts (pymunk's follows its spatial index),
 which after ten iterations changes the result slightly where the robot touches two walls.
 
+Several robots of one building move together (:func:`drive_group`): as pymunk's bodies of one
+space, each sub-step moves them all, finds their wall contacts and the pairs of robots that
+overlap, and solves all these contacts in the same iterations, a contact of two robots as one
+between two bodies of equal mass (``tests/sim/test_robot_team.py`` holds it to pymunk's
+:class:`~realistic_indoor.sim.robot.RobotTeam`).
+
 Walls are found through a uniform grid of buckets (:class:`SegmentGrid`): each bucket lists
 the segments that can touch a disc centred anywhere in it, so a sub-step tests only those.
 """
@@ -38,7 +44,16 @@ from realistic_indoor.sim.robot import _COLLISION_BIAS, _COLLISION_SLOP_M, Motio
 if TYPE_CHECKING:
     from realistic_indoor.sim.world import World
 
-__all__ = ["STATE_SIZE", "DiscRobot", "SegmentGrid", "drive_params", "robot_in_world", "segment_grid"]
+__all__ = [
+    "STATE_SIZE",
+    "DiscRobot",
+    "SegmentGrid",
+    "drive",
+    "drive_group",
+    "drive_params",
+    "robot_in_world",
+    "segment_grid",
+]
 
 SOLVER_ITERATIONS = 10
 """Iterations of the contact solver per sub-step (pymunk's default ``space.iterations``)."""
@@ -53,7 +68,7 @@ STATE_SIZE = CACHED_IDS + 2 * MAX_CONTACTS
 """Floats of a robot's physics state: x, y, heading (m, m, rad), speed and turn rate after the
 limits (m/s, rad/s), the body's velocity (m/s, x and y), its bias velocity (m/s, x and y), the
 number of walls touched in the last sub-step, their segment indices and their impulses (m/s)."""
-N_PARAMS = 11
+N_PARAMS = 12
 """Floats of :func:`drive_params`."""
 
 
@@ -110,7 +125,8 @@ def drive_params(config: RobotConfig, wall_thickness_m: float) -> np.ndarray:
     Returns:
         ``(N_PARAMS,)``: radius plus half wall (m), speed and turn limits (m/s, rad/s), speed
         and turn-rate change per control step (m/s, rad/s), control step (s), sub-steps,
-        slop (m), share of an overlap removed per sub-step, solver iterations, half wall (m).
+        slop (m), share of an overlap removed per sub-step, solver iterations, half wall (m),
+        radius (m).
     """
     h = config.dt_s / config.substeps
     return np.array(
@@ -126,6 +142,7 @@ def drive_params(config: RobotConfig, wall_thickness_m: float) -> np.ndarray:
             1.0 - _COLLISION_BIAS**h,
             SOLVER_ITERATIONS,
             wall_thickness_m / 2,
+            config.radius_m,
         ],
         dtype=np.float64,
     )
@@ -259,8 +276,41 @@ def drive(state, cmd_v, cmd_w, segs, start, items, origin, params):  # pragma: n
     """One control step of one robot, in place on ``state``; returns ``(collided, distance_m)``.
 
     ``cmd_v`` (m/s) and ``cmd_w`` (rad/s) are the command; the limits of ``params``
-    (:func:`drive_params`) apply as in :meth:`Robot.step`.
+    (:func:`drive_params`) apply as in :meth:`Robot.step`. :func:`drive_group` with one robot.
     """
+    phys = state.reshape(1, state.shape[0])
+    robots = np.zeros(1, dtype=np.int64)
+    commands = np.empty((1, 2))
+    commands[0, 0] = cmd_v
+    commands[0, 1] = cmd_w
+    touched, distance = drive_group(phys, robots, commands, segs, start, items, origin, params)
+    return touched[0], distance[0]
+
+
+@njit(cache=True, nogil=True)
+def drive_group(phys, robots, commands, segs, start, items, origin, params):  # pragma: no cover - compiled
+    """One control step of the robots ``robots`` of one building, moved together, in place.
+
+    Each robot moves as :func:`drive` moves one, and the robots also push each other apart:
+    two discs closer than two radii (``params[11]``) are a contact of two bodies of equal mass,
+    solved with the wall contacts in the same iterations (as pymunk solves two bodies of one
+    space). A robot that touches no other robot moves exactly as it would alone.
+
+    Args:
+        phys: ``(n, STATE_SIZE)`` physics states, the rows of ``robots`` updated.
+        robots: ``(k,)`` int64 rows of ``phys`` to move, in the order contacts are solved.
+        commands: ``(n, 2)`` ``(v m/s, w rad/s)`` per row of ``phys``.
+        segs: ``(S, 4)`` wall segments of the building (m).
+        start: The wall grid's bucket starts.
+        items: The wall grid's segment indices.
+        origin: The wall grid's origin, bucket side and size.
+        params: :func:`drive_params`.
+
+    Returns:
+        ``(touched, distance)``: ``(k,)`` bool, whether each robot touched a wall or another
+        robot, and ``(k,)`` float64 the distance each moved (m).
+    """
+    k = robots.shape[0]
     reach, v_max, w_max, dv_max, dw_max, dt, n_sub = (
         params[0],
         params[1],
@@ -270,33 +320,117 @@ def drive(state, cmd_v, cmd_w, segs, start, items, origin, params):  # pragma: n
         params[5],
         params[6],
     )
-    v = state[V] + min(max(min(max(cmd_v, -v_max), v_max) - state[V], -dv_max), dv_max)
-    w = state[W] + min(max(min(max(cmd_w, -w_max), w_max) - state[W], -dw_max), dw_max)
-    state[V] = v
-    state[W] = w
+    scalars = np.empty((5, k))  # few allocations: a robot's step is about 1 us
+    vs, ws, thetas, x0s, y0s = scalars[0], scalars[1], scalars[2], scalars[3], scalars[4]
+    for a in range(k):
+        state = phys[robots[a]]
+        cmd_v, cmd_w = commands[robots[a], 0], commands[robots[a], 1]
+        v = state[V] + min(max(min(max(cmd_v, -v_max), v_max) - state[V], -dv_max), dv_max)
+        w = state[W] + min(max(min(max(cmd_w, -w_max), w_max) - state[W], -dw_max), dw_max)
+        state[V] = v
+        state[W] = w
+        vs[a], ws[a], thetas[a] = v, w, state[THETA]
+        x0s[a], y0s[a] = state[X], state[Y]
     substeps = int(n_sub)
     h = dt / substeps
-    x0, y0 = state[X], state[Y]
-    theta = state[THETA]
-    nxs = np.empty(MAX_CONTACTS)
-    nys = np.empty(MAX_CONTACTS)
-    bias = np.empty(MAX_CONTACTS)
-    ids = np.empty(MAX_CONTACTS, dtype=np.int64)
-    touched = False
+    wall_floats = np.empty((3, k, MAX_CONTACTS))
+    walls = _Contacts(
+        wall_floats[0],
+        wall_floats[1],
+        wall_floats[2],
+        np.empty((k, MAX_CONTACTS), dtype=np.int64),
+        np.zeros(k, dtype=np.int64),
+    )
+    n_max = k * (k - 1) // 2
+    pair_ints = np.empty((2, n_max), dtype=np.int64)
+    pair_floats = np.empty((3, n_max))
+    pairs = _Pairs(pair_ints[0], pair_ints[1], pair_floats[0], pair_floats[1], pair_floats[2])
+    wall_impulses = np.empty((2, k, MAX_CONTACTS))
+    pair_impulses = np.empty((2, n_max))
+    impulses = (wall_impulses[0], wall_impulses[1], pair_impulses[0], pair_impulses[1])
+    touched = np.zeros(k, dtype=np.bool_)
     for _ in range(substeps):
-        state[X] += (state[VX] + state[BX]) * h
-        state[Y] += (state[VY] + state[BY]) * h
-        state[BX] = 0.0
-        state[BY] = 0.0
-        n = _contacts(state[X], state[Y], reach, segs, start, items, origin, params, h, nxs, nys, bias, ids)
-        touched = touched or n > 0
-        mid = theta + 0.5 * w * h
-        state[VX] = v * math.cos(mid)
-        state[VY] = v * math.sin(mid)
-        _solve(state, nxs, nys, bias, ids, n, int(params[9]))
-        theta += w * h
-    state[THETA] = theta - 2.0 * math.pi * np.rint(theta / (2.0 * math.pi))  # math.remainder
-    return touched, math.hypot(state[X] - x0, state[Y] - y0)
+        for a in range(k):
+            state = phys[robots[a]]
+            state[X] += (state[VX] + state[BX]) * h
+            state[Y] += (state[VY] + state[BY]) * h
+            state[BX] = 0.0
+            state[BY] = 0.0
+        for a in range(k):
+            state = phys[robots[a]]
+            n = _contacts(
+                state[X], state[Y], reach, segs, start, items, origin, params, h,
+                walls.nx[a], walls.ny[a], walls.bias[a], walls.ids[a],
+            )  # fmt: skip
+            walls.count[a] = n
+            touched[a] = touched[a] or n > 0
+        n_pairs = _pair_contacts(phys, robots, params, h, pairs, touched)
+        for a in range(k):
+            state = phys[robots[a]]
+            mid = thetas[a] + 0.5 * ws[a] * h
+            state[VX] = vs[a] * math.cos(mid)
+            state[VY] = vs[a] * math.sin(mid)
+        _solve(phys, robots, walls, pairs, n_pairs, int(params[9]), impulses)
+        for a in range(k):
+            thetas[a] += ws[a] * h
+    distance = np.empty(k)
+    for a in range(k):
+        state = phys[robots[a]]
+        theta = thetas[a]
+        state[THETA] = theta - 2.0 * math.pi * np.rint(theta / (2.0 * math.pi))  # math.remainder
+        distance[a] = math.hypot(state[X] - x0s[a], state[Y] - y0s[a])
+    return touched, distance
+
+
+class _Contacts(NamedTuple):
+    """Wall contacts of each robot of a group in one sub-step (rows: robots)."""
+
+    nx: np.ndarray
+    ny: np.ndarray
+    bias: np.ndarray
+    ids: np.ndarray
+    count: np.ndarray
+
+
+class _Pairs(NamedTuple):
+    """Robot-robot contacts of a group in one sub-step.
+
+    The two robots (positions in the group), the normal from the second to the first, and the
+    bias velocity (m/s).
+    """
+
+    a: np.ndarray
+    b: np.ndarray
+    nx: np.ndarray
+    ny: np.ndarray
+    bias: np.ndarray
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _pair_contacts(phys, robots, params, h, pairs, touched):  # pragma: no cover - compiled
+    """Find the pairs of robots closer than two radii; mark them touched; return how many."""
+    reach = 2.0 * params[11]
+    slop, bias_coef = params[7], params[8]
+    n = 0
+    k = robots.shape[0]
+    for a in range(k):
+        pa = phys[robots[a]]
+        for b in range(a + 1, k):
+            pb = phys[robots[b]]
+            dx = pa[X] - pb[X]
+            dy = pa[Y] - pb[Y]
+            d2 = dx * dx + dy * dy
+            if d2 < reach * reach:
+                d = math.sqrt(d2)
+                pairs.a[n] = a
+                pairs.b[n] = b
+                pairs.nx[n] = dx / d if d > 0.0 else 1.0
+                pairs.ny[n] = dy / d if d > 0.0 else 0.0
+                pairs.bias[n] = bias_coef * max(reach - d - slop, 0.0) / h
+                touched[a] = True
+                touched[b] = True
+                n += 1
+    return n
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -328,35 +462,100 @@ def _contacts(px, py, reach, segs, start, items, origin, params, h, nxs, nys, bi
 
 
 @njit(cache=True, nogil=True, inline="always")
-def _solve(state, nxs, nys, bias, ids, n, iterations):  # pragma: no cover - compiled
-    """Chipmunk's sequential impulses for a body of unit mass against static contacts.
+def _solve(phys, robots, walls, pairs, n_pairs, iterations, impulses):  # pragma: no cover - compiled
+    """Chipmunk's sequential impulses for bodies of equal mass against walls and each other.
 
-    Warm start: a wall touched in the previous sub-step starts from the impulse it ended with
-    there (cached in ``state``); the contacts and their final impulses are cached for the next.
+    Warm start: a contact already there in the previous sub-step starts from the impulse it
+    ended with there (cached in the first robot's state: a wall by its segment index, another
+    robot ``j`` as ``-1 - j``); the contacts and their final impulses are cached for the next.
+    Impulses are per unit mass: a wall takes away the whole velocity into it, a contact of two
+    robots half of it from each. ``impulses`` holds the arrays they accumulate in, zeroed here:
+    normal and bias impulses of the walls ``(k, MAX_CONTACTS)``, then of the pairs.
     """
-    jn = np.zeros(MAX_CONTACTS)
-    jb = np.zeros(MAX_CONTACTS)
-    cached = int(state[N_CACHED])
-    for i in range(n):
-        for c in range(cached):
-            if int(state[CACHED_IDS + c]) == ids[i]:
-                jn[i] = state[CACHED_IDS + MAX_CONTACTS + c]
-                state[VX] += nxs[i] * jn[i]
-                state[VY] += nys[i] * jn[i]
+    k = robots.shape[0]
+    jn, jb, pjn, pjb = impulses
+    jn[:] = 0.0
+    jb[:] = 0.0
+    pjn[:] = 0.0
+    pjb[:] = 0.0
+    for a in range(k):
+        state = phys[robots[a]]
+        cached = int(state[N_CACHED])
+        for i in range(walls.count[a]):
+            for c in range(cached):
+                if int(state[CACHED_IDS + c]) == walls.ids[a, i]:
+                    jn[a, i] = state[CACHED_IDS + MAX_CONTACTS + c]
+                    state[VX] += walls.nx[a, i] * jn[a, i]
+                    state[VY] += walls.ny[a, i] * jn[a, i]
+    for p in range(n_pairs):
+        _warm_pair(phys, robots, pairs, p, pjn)
     for _ in range(iterations):
+        for a in range(k):
+            _wall_iteration(phys[robots[a]], walls, a, jn[a], jb[a])
+        for p in range(n_pairs):
+            _pair_iteration(phys[robots[pairs.a[p]]], phys[robots[pairs.b[p]]], pairs, p, pjn, pjb)
+    for a in range(k):
+        state = phys[robots[a]]
+        n = walls.count[a]
         for i in range(n):
-            nx, ny = nxs[i], nys[i]
-            vbn = state[BX] * nx + state[BY] * ny
-            old = jb[i]
-            jb[i] = max(old + bias[i] - vbn, 0.0)
-            state[BX] += nx * (jb[i] - old)
-            state[BY] += ny * (jb[i] - old)
-            vn = state[VX] * nx + state[VY] * ny
-            old = jn[i]
-            jn[i] = max(old - vn, 0.0)
-            state[VX] += nx * (jn[i] - old)
-            state[VY] += ny * (jn[i] - old)
-    state[N_CACHED] = n
-    for i in range(n):
-        state[CACHED_IDS + i] = ids[i]
-        state[CACHED_IDS + MAX_CONTACTS + i] = jn[i]
+            state[CACHED_IDS + i] = walls.ids[a, i]
+            state[CACHED_IDS + MAX_CONTACTS + i] = jn[a, i]
+        for p in range(n_pairs):
+            if pairs.a[p] == a and n < MAX_CONTACTS:
+                state[CACHED_IDS + n] = -1 - robots[pairs.b[p]]
+                state[CACHED_IDS + MAX_CONTACTS + n] = pjn[p]
+                n += 1
+        state[N_CACHED] = n
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _wall_iteration(state, walls, a, jn, jb):  # pragma: no cover - compiled
+    """One Gauss-Seidel pass over robot ``a``'s wall contacts (bias, then normal impulse)."""
+    for i in range(walls.count[a]):
+        nx, ny = walls.nx[a, i], walls.ny[a, i]
+        vbn = state[BX] * nx + state[BY] * ny
+        old = jb[i]
+        jb[i] = max(old + walls.bias[a, i] - vbn, 0.0)
+        state[BX] += nx * (jb[i] - old)
+        state[BY] += ny * (jb[i] - old)
+        vn = state[VX] * nx + state[VY] * ny
+        old = jn[i]
+        jn[i] = max(old - vn, 0.0)
+        state[VX] += nx * (jn[i] - old)
+        state[VY] += ny * (jn[i] - old)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _warm_pair(phys, robots, pairs, p, pjn):  # pragma: no cover - compiled
+    """Apply again the impulse contact ``p`` of two robots ended the previous sub-step with."""
+    sa, sb = phys[robots[pairs.a[p]]], phys[robots[pairs.b[p]]]
+    other = -1 - robots[pairs.b[p]]
+    for c in range(int(sa[N_CACHED])):
+        if int(sa[CACHED_IDS + c]) == other:
+            pjn[p] = sa[CACHED_IDS + MAX_CONTACTS + c]
+            sa[VX] += pairs.nx[p] * pjn[p]
+            sa[VY] += pairs.ny[p] * pjn[p]
+            sb[VX] -= pairs.nx[p] * pjn[p]
+            sb[VY] -= pairs.ny[p] * pjn[p]
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _pair_iteration(sa, sb, pairs, p, pjn, pjb):  # pragma: no cover - compiled
+    """One Gauss-Seidel pass over contact ``p`` of two robots of equal mass."""
+    nx, ny = pairs.nx[p], pairs.ny[p]
+    vbn = (sa[BX] - sb[BX]) * nx + (sa[BY] - sb[BY]) * ny
+    old = pjb[p]
+    pjb[p] = max(old + 0.5 * (pairs.bias[p] - vbn), 0.0)
+    d = pjb[p] - old
+    sa[BX] += nx * d
+    sa[BY] += ny * d
+    sb[BX] -= nx * d
+    sb[BY] -= ny * d
+    vn = (sa[VX] - sb[VX]) * nx + (sa[VY] - sb[VY]) * ny
+    old = pjn[p]
+    pjn[p] = max(old - 0.5 * vn, 0.0)
+    d = pjn[p] - old
+    sa[VX] += nx * d
+    sa[VY] += ny * d
+    sb[VX] -= nx * d
+    sb[VY] -= ny * d

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
@@ -15,7 +16,7 @@ from realistic_indoor.errors import ConfigError
 if TYPE_CHECKING:
     from realistic_indoor.sim.world import World
 
-__all__ = ["PHYSICS", "Motion", "Robot", "RobotConfig"]
+__all__ = ["PHYSICS", "Motion", "Robot", "RobotConfig", "RobotTeam"]
 
 PHYSICS = ("compiled", "pymunk")
 """How a robot's motion is computed: the compiled disc of
@@ -113,7 +114,8 @@ class Robot:
     The space is built once per building (the walls never move); :meth:`reset` only moves the
     robot. Each :meth:`step` applies the acceleration and speed limits to the command, then runs
     ``substeps`` physics steps in which the body is driven at the limited speed along its
-    heading; walls stop it and it slides along them (no friction).
+    heading; walls stop it and it slides along them (no friction). It is a
+    :class:`RobotTeam` of one.
 
     The robot touches a wall when its centre is ``radius_m`` plus half the wall's thickness
     from the wall's centre line. On first contact it may overlap the wall by up to one sub-step's
@@ -135,66 +137,27 @@ class Robot:
         wall_thickness_m: float = 0.1,
         pose: tuple[float, float, float] = (0.0, 0.0, 0.0),
     ) -> None:
-        self.config = config or RobotConfig()
-        self._space = pymunk.Space()
-        self._space.collision_slop = _COLLISION_SLOP_M
-        self._space.collision_bias = _COLLISION_BIAS
-        self._add_walls(np.asarray(segments, dtype=float).reshape(-1, 2, 2), wall_thickness_m / 2)
-        self._body = pymunk.Body(_MASS_KG, math.inf)
-        self._body.velocity_func = self._drive
-        self._wanted = (0.0, 0.0)
-        disc = pymunk.Circle(self._body, self.config.radius_m)
-        disc.friction = 0.0
-        disc.collision_type = _ROBOT
-        self._space.add(self._body, disc)
-        self._space.on_collision(_ROBOT, _WALL, pre_solve=self._on_contact)
-        self._touching = False
-        self.reset(pose)
+        self._team = RobotTeam(segments, config, wall_thickness_m, [pose])
+        self.config = self._team.config
 
     @classmethod
     def in_world(cls, world: World, config: RobotConfig | None = None) -> Robot:
         """A robot among ``world``'s walls, at its start pose."""
         return cls(world.collision_segments, config, world.config.wall_thickness_m, world.start_pose)
 
-    def _add_walls(self, segments: np.ndarray, radius_m: float) -> None:
-        static = self._space.static_body
-        shapes = []
-        for (ax, ay), (bx, by) in segments:
-            s = pymunk.Segment(static, (float(ax), float(ay)), (float(bx), float(by)), radius_m)
-            s.friction = 0.0
-            s.collision_type = _WALL
-            shapes.append(s)
-        self._space.add(*shapes)
-
-    def _drive(self, body: pymunk.Body, gravity: object, damping: float, dt: float) -> None:
-        # Runs before pymunk's contact solver: the solver then takes away any speed into a wall,
-        # and the next sub-step moves the body with what is left (it slides).
-        body.velocity = self._wanted
-
-    def _on_contact(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        self._touching = True
-
     def reset(self, pose: tuple[float, float, float]) -> None:
         """Put the robot at ``pose`` ``(x, y, theta)``, at rest."""
-        x, y, theta = (float(v) for v in pose)
-        self._body.position = (x, y)
-        self._body.velocity = (0.0, 0.0)
-        self._wanted = (0.0, 0.0)
-        self._space.reindex_shapes_for_body(self._body)
-        self._theta = math.remainder(theta, math.tau)
-        self._v = 0.0
-        self._w = 0.0
+        self._team.reset([pose])
 
     @property
     def pose(self) -> tuple[float, float, float]:
         """``(x, y, theta)``: position (m) and heading (rad, in ``[-pi, pi]``)."""
-        p = self._body.position
-        return (p.x, p.y, self._theta)
+        return self._team.poses[0]
 
     @property
     def velocity(self) -> tuple[float, float]:
         """``(v, w)``: current forward speed (m/s) and turning rate (rad/s), after limits."""
-        return (self._v, self._w)
+        return self._team.velocities[0]
 
     def step(self, v_m_s: float, w_rad_s: float) -> Motion:
         """Drive for one control step (``1 / control_hz`` s).
@@ -208,23 +171,126 @@ class Robot:
             Whether a wall was touched, and the distance covered. Cost: about 10 microseconds
             with the default 4 sub-steps.
         """
+        return self._team.step([(v_m_s, w_rad_s)])[0]
+
+
+class RobotTeam:
+    """Several differential-drive discs in one pymunk space: they collide with the walls and each other.
+
+    The reference for the compiled :func:`~realistic_indoor.sim.disc_physics.drive_group`. Each
+    robot is a body of the same mass and infinite moment, driven as :class:`Robot` drives one;
+    two robots that meet push each other apart (no friction, no bounce).
+
+    Args:
+        segments: ``(N, 2, 2)`` wall segments (m), e.g. :attr:`World.collision_segments`.
+        config: Body, limits and control rate (the same for every robot).
+        wall_thickness_m: Thickness given to the wall segments (m).
+        poses: Initial ``(x, y, theta)`` of each robot (m, m, rad), at least one.
+    """
+
+    def __init__(
+        self,
+        segments: np.ndarray,
+        config: RobotConfig | None = None,
+        wall_thickness_m: float = 0.1,
+        poses: list[tuple[float, float, float]] | None = None,
+    ) -> None:
+        self.config = config or RobotConfig()
+        poses = poses or [(0.0, 0.0, 0.0)]
+        self._space = pymunk.Space()
+        self._space.collision_slop = _COLLISION_SLOP_M
+        self._space.collision_bias = _COLLISION_BIAS
+        self._add_walls(np.asarray(segments, dtype=float).reshape(-1, 2, 2), wall_thickness_m / 2)
+        self._bodies = [self._add_body(k) for k in range(len(poses))]
+        self._wanted = [(0.0, 0.0)] * len(poses)
+        self._space.on_collision(_ROBOT, _WALL, pre_solve=self._on_contact)
+        self._space.on_collision(_ROBOT, _ROBOT, pre_solve=self._on_contact)
+        self._touching = [False] * len(poses)
+        self.reset(poses)
+
+    def _add_walls(self, segments: np.ndarray, radius_m: float) -> None:
+        static = self._space.static_body
+        shapes = []
+        for (ax, ay), (bx, by) in segments:
+            s = pymunk.Segment(static, (float(ax), float(ay)), (float(bx), float(by)), radius_m)
+            s.friction = 0.0
+            s.collision_type = _WALL
+            shapes.append(s)
+        self._space.add(*shapes)
+
+    def _add_body(self, k: int) -> pymunk.Body:
+        body = pymunk.Body(_MASS_KG, math.inf)
+        body.velocity_func = functools.partial(self._drive, k)
+        disc = pymunk.Circle(body, self.config.radius_m)
+        disc.friction = 0.0
+        disc.collision_type = _ROBOT
+        self._space.add(body, disc)
+        return body
+
+    def _drive(self, k: int, body: pymunk.Body, gravity: object, damping: float, dt: float) -> None:
+        # Runs before pymunk's contact solver: the solver then takes away any speed into a wall,
+        # and the next sub-step moves the body with what is left (it slides).
+        body.velocity = self._wanted[k]
+
+    def _on_contact(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
+        for shape in arbiter.shapes:
+            if shape.collision_type == _ROBOT:
+                self._touching[self._bodies.index(shape.body)] = True
+
+    def reset(self, poses: list[tuple[float, float, float]]) -> None:
+        """Put the robots at ``poses`` (``(x, y, theta)`` each, one per robot), at rest."""
+        self._theta, self._v, self._w = [], [], []
+        for k, (body, pose) in enumerate(zip(self._bodies, poses, strict=True)):
+            x, y, theta = (float(v) for v in pose)
+            body.position = (x, y)
+            body.velocity = (0.0, 0.0)
+            self._wanted[k] = (0.0, 0.0)
+            self._space.reindex_shapes_for_body(body)
+            self._theta.append(math.remainder(theta, math.tau))
+            self._v.append(0.0)
+            self._w.append(0.0)
+
+    @property
+    def poses(self) -> list[tuple[float, float, float]]:
+        """``(x, y, theta)`` of each robot: position (m) and heading (rad, in ``[-pi, pi]``)."""
+        return [(b.position.x, b.position.y, t) for b, t in zip(self._bodies, self._theta, strict=True)]
+
+    @property
+    def velocities(self) -> list[tuple[float, float]]:
+        """``(v, w)`` of each robot: forward speed (m/s) and turning rate (rad/s), after limits."""
+        return list(zip(self._v, self._w, strict=True))
+
+    def step(self, commands: list[tuple[float, float]]) -> list[Motion]:
+        """Drive every robot for one control step (``1 / control_hz`` s), as :meth:`Robot.step`.
+
+        Args:
+            commands: ``(v m/s, w rad/s)`` of each robot.
+
+        Returns:
+            Each robot's motion; ``collided`` is whether it touched a wall or another robot.
+        """
         c = self.config
         dt = c.dt_s
-        self._v = _approach(self._v, _clip(v_m_s, c.max_speed_m_s), c.max_accel_m_s2 * dt)
-        self._w = _approach(self._w, _clip(w_rad_s, c.max_turn_rate_rad_s), c.max_angular_accel_rad_s2 * dt)
         h = dt / c.substeps
-        body, space, v, w = self._body, self._space, self._v, self._w
-        start = body.position
-        theta = self._theta
-        self._touching = False
+        for k, (v_m_s, w_rad_s) in enumerate(commands):
+            self._v[k] = _approach(self._v[k], _clip(v_m_s, c.max_speed_m_s), c.max_accel_m_s2 * dt)
+            self._w[k] = _approach(
+                self._w[k], _clip(w_rad_s, c.max_turn_rate_rad_s), c.max_angular_accel_rad_s2 * dt
+            )
+        starts = [b.position for b in self._bodies]
+        theta = list(self._theta)
+        self._touching = [False] * len(self._bodies)
         for _ in range(c.substeps):
-            mid = theta + 0.5 * w * h
-            self._wanted = (v * math.cos(mid), v * math.sin(mid))
-            space.step(h)
-            theta += w * h
-        self._theta = math.remainder(theta, math.tau)
-        end = body.position
-        return Motion(self._touching, math.hypot(end.x - start.x, end.y - start.y))
+            for k, (v, w) in enumerate(zip(self._v, self._w, strict=True)):
+                mid = theta[k] + 0.5 * w * h
+                self._wanted[k] = (v * math.cos(mid), v * math.sin(mid))
+                theta[k] += w * h
+            self._space.step(h)
+        self._theta = [math.remainder(t, math.tau) for t in theta]
+        return [
+            Motion(touching, math.hypot(b.position.x - s.x, b.position.y - s.y))
+            for b, s, touching in zip(self._bodies, starts, self._touching, strict=True)
+        ]
 
 
 def _clip(value: float, limit: float) -> float:

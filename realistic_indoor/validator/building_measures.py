@@ -169,19 +169,34 @@ def _core_facade_share(building: Building, shape: BaseGeometry) -> float:
 
 
 def measure_summary(measures: Sequence[BuildingMeasures]) -> dict[str, dict[str, float]]:
-    """Median, quartiles and count of every measure over a set of plans (``nan`` values left out).
+    """Median, quartiles, spread and count of every measure over a set of plans (``nan`` values left out).
 
     Returns:
-        ``{measure: {"median", "q1", "q3", "n"}}`` in the order of :data:`BUILDING_MEASURES`;
-        ``nan`` statistics for a measure no plan has.
+        ``{measure: {"median", "q1", "q3", "spread", "n"}}`` in the order of
+        :data:`BUILDING_MEASURES`, ``spread`` being how much the set's buildings differ
+        (:func:`spread`); ``nan`` statistics for a measure no plan has.
     """
     table = np.array([list(m.as_dict().values()) for m in measures], dtype=float).reshape(len(measures), -1)
     out = {}
     for j, name in enumerate(BUILDING_MEASURES):
         values = table[:, j][~np.isnan(table[:, j])] if len(measures) else np.array([])
         q1, median, q3 = np.percentile(values, [25, 50, 75]) if len(values) else (math.nan,) * 3
-        out[name] = {"median": float(median), "q1": float(q1), "q3": float(q3), "n": len(values)}
+        out[name] = {
+            "median": float(median),
+            "q1": float(q1),
+            "q3": float(q3),
+            "spread": spread(q1, median, q3),
+            "n": len(values),
+        }
     return out
+
+
+def spread(q1: float, median: float, q3: float) -> float:
+    """How much the buildings of a set differ in a measure: interquartile range over the median.
+
+    0 when all are alike; ``nan`` for a median of 0 or ``nan``.
+    """
+    return float((q3 - q1) / abs(median)) if median and not math.isnan(median) else math.nan
 
 
 def deviations(

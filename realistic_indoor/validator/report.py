@@ -81,7 +81,7 @@ def _measure_columns(c: Comparison) -> dict[str, dict[str, dict[str, float]]]:
 
 def _measure_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
     columns = _measure_columns(c)
-    header = ["measure (median [interquartile range])", *columns]
+    header = ["measure (median [interquartile range] spread: range / median)", *columns]
     rows = [
         [text, *(_median_iqr(summary[name]) for summary in columns.values())]
         for name, text in BUILDING_MEASURES.items()
@@ -92,7 +92,8 @@ def _measure_rows(c: Comparison) -> tuple[list[str], list[list[str]]]:
 def _median_iqr(stat: dict[str, float]) -> str:
     if math.isnan(stat["median"]):
         return "-"
-    return f"{stat['median']:.3g} [{stat['q1']:.3g}-{stat['q3']:.3g}]"
+    text = f"{stat['median']:.3g} [{stat['q1']:.3g}-{stat['q3']:.3g}]"
+    return text if math.isnan(stat["spread"]) else f"{text} {stat['spread']:.2f}"
 
 
 _HOUSE_MEDIAN = {"hallway_width": "{:.2f}", "corridor_share": "{:.1%}"}

@@ -19,8 +19,12 @@ def _measures(fill: float, loops: int = 0) -> BuildingMeasures:
 def test_measure_summary__median_and_quartiles_over_plans():
     summary = measure_summary([_measures(f) for f in (0.2, 0.4, 0.6, 0.8, 1.0)])
     # numpy's linear quartiles of 0.2..1.0 in steps of 0.2: 0.4, 0.6, 0.8
-    assert summary["footprint_fill"] == pytest.approx({"median": 0.6, "q1": 0.4, "q3": 0.8, "n": 5})
+    # spread between the plans: the interquartile range over the median, (0.8 - 0.4) / 0.6
+    expected = {"median": 0.6, "q1": 0.4, "q3": 0.8, "spread": 0.4 / 0.6, "n": 5}
+    assert summary["footprint_fill"] == pytest.approx(expected)
+    assert summary["circulation_share"]["spread"] == 0.0  # every plan alike
     assert math.isnan(summary["core_facade_share"]["median"]) and summary["core_facade_share"]["n"] == 0
+    assert math.isnan(summary["core_facade_share"]["spread"])
 
 
 def test_deviations__distance_outside_the_reference_interquartile_range():

@@ -506,25 +506,14 @@ def step_batch(
             time); further ones are the caller's (search: victims).
         out_motion: ``(n,)`` float64 distance driven (m), written.
     """
-    (
-        robot_building,
-        robot_map,
-        building_start,
-        building_robots,
-        map_start,
-        map_robots,
-        maps_start,
-        building_maps,
-    ) = _layout_parts(layout)
     true_m = np.empty(out_scan.shape, dtype=np.float32)  # each beam's true range (m)
     kinds = np.empty(out_scan.shape, dtype=np.uint8)  # what each beam ended on
-    for k in prange(building_start.shape[0] - 1):
+    for k in prange(layout[3] - layout[2] - 1):  # building_start's length, less one
         b = np.int64(k)  # prange counts in uint64; lists index with a signed int
         _step_building(
-            b, mode, commands, phys, robot_building, robot_map, building_start, building_robots, map_start,
-            map_robots, maps_start, building_maps, meta, skips, targets, segments, seg_start, seg_items,
-            seg_origin, grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise, lidar, local,
-            true_m, kinds, out_scan, out_local, out_terms, out_motion,
+            b, mode, commands, phys, layout, meta, skips, targets, segments, seg_start, seg_items, seg_origin,
+            grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise, lidar, local, true_m, kinds,
+            out_scan, out_local, out_terms, out_motion,
         )  # fmt: skip
 
 
@@ -565,24 +554,13 @@ def step_batch_serial(
     The kernels spell their parameters out: with ``*args`` numba types every argument in
     Python on each call (about 0.3 ms a call, against a few microseconds).
     """
-    (
-        robot_building,
-        robot_map,
-        building_start,
-        building_robots,
-        map_start,
-        map_robots,
-        maps_start,
-        building_maps,
-    ) = _layout_parts(layout)
     true_m = np.empty(out_scan.shape, dtype=np.float32)  # each beam's true range (m)
     kinds = np.empty(out_scan.shape, dtype=np.uint8)  # what each beam ended on
-    for b in range(building_start.shape[0] - 1):
+    for b in range(layout[3] - layout[2] - 1):
         _step_building(
-            b, mode, commands, phys, robot_building, robot_map, building_start, building_robots, map_start,
-            map_robots, maps_start, building_maps, meta, skips, targets, segments, seg_start, seg_items,
-            seg_origin, grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise, lidar, local,
-            true_m, kinds, out_scan, out_local, out_terms, out_motion,
+            b, mode, commands, phys, layout, meta, skips, targets, segments, seg_start, seg_items, seg_origin,
+            grids, pooled, todo, walls, observed, params, cos_off, sin_off, noise, lidar, local, true_m, kinds,
+            out_scan, out_local, out_terms, out_motion,
         )  # fmt: skip
 
 
@@ -607,12 +585,21 @@ def _layout_parts(layout):  # pragma: no cover - compiled
 
 @njit(cache=True, nogil=True)
 def _step_building(
-    b, mode, commands, phys, robot_building, robot_map, building_start, building_robots, map_start, map_robots,
-    maps_start, building_maps, meta, skips, targets, segments, seg_start, seg_items, seg_origin, grids, pooled,
-    todo, walls, observed, params, cos_off, sin_off, noise, lidar, local, true_m, kinds, out_scan, out_local,
-    out_terms, out_motion,
+    b, mode, commands, phys, layout, meta, skips, targets, segments, seg_start, seg_items, seg_origin, grids,
+    pooled, todo, walls, observed, params, cos_off, sin_off, noise, lidar, local, true_m, kinds, out_scan,
+    out_local, out_terms, out_motion,
 ):  # fmt: skip  # pragma: no cover - compiled
     """Building ``b``'s part of :func:`step_batch`: its robots' physics, scans, maps and views, in turn."""
+    (
+        robot_building,
+        robot_map,
+        building_start,
+        building_robots,
+        map_start,
+        map_robots,
+        maps_start,
+        building_maps,
+    ) = _layout_parts(layout)
     _drive_building(b, mode, commands, phys, building_start, building_robots, segments, seg_start,
                     seg_items, seg_origin, params, out_terms, out_motion)  # fmt: skip
     members = building_robots[building_start[b] : building_start[b + 1]]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -24,7 +25,9 @@ __all__ = [
     "PoseObservation",
     "ScanObservation",
     "VelocityObservation",
+    "batch_observations",
     "explore_observations",
+    "mark_points",
     "time_left",
 ]
 
@@ -70,21 +73,37 @@ class GlobalMapObservation:
 
     def observe(self, sim: Simulation) -> np.ndarray:
         """The image (a new array). Cost: a pass over the pooled map and the trajectory."""
-        s, res = self.config.size_px, self.config.resolution_m
+        res = self.config.resolution_m
         image = np.zeros(self.space.shape, dtype=np.uint8)
         x, y, _ = sim.robot.pose
         up = sim.world.start_pose[2]
         sim.map.global_view((x, y), up, res, image[0], image[1])
         image[2][(image[0] == 0) & (image[1] == 0)] = 255
-        track = np.asarray(sim.trajectory, dtype=float).reshape(-1, 2) - (x, y)
-        c, si = np.cos(up), np.sin(up)
-        ahead = (track[:, 0] * c + track[:, 1] * si) / res
-        left = (track[:, 1] * c - track[:, 0] * si) / res
-        rows = np.floor(s / 2 - ahead).astype(np.int64)
-        cols = np.floor(s / 2 - left).astype(np.int64)
-        inside = (rows >= 0) & (rows < s) & (cols >= 0) & (cols < s)
-        image[3][rows[inside], cols[inside]] = 255
+        mark_points(image[3], np.asarray(sim.trajectory, dtype=float), (x, y), up, res)
         return image
+
+
+def mark_points(image: np.ndarray, xy: np.ndarray, centre_xy: tuple[float, float], up_rad: float,
+                resolution_m: float) -> None:  # fmt: skip
+    """Set to 255 the pixels of a fixed-orientation image that hold the points ``xy``.
+
+    Args:
+        image: ``(S, S)`` uint8, centred on ``centre_xy`` with the direction ``up_rad`` up
+            (row 0), pixels ``resolution_m`` across; points outside it are left out.
+        xy: ``(N, 2)`` points (m, plan frame).
+        centre_xy: The image's centre (m).
+        up_rad: The plan-frame direction shown up (rad).
+        resolution_m: Side of a pixel (m).
+    """
+    s = image.shape[0]
+    track = np.asarray(xy, dtype=float).reshape(-1, 2) - centre_xy
+    c, si = np.cos(up_rad), np.sin(up_rad)
+    ahead = (track[:, 0] * c + track[:, 1] * si) / resolution_m
+    left = (track[:, 1] * c - track[:, 0] * si) / resolution_m
+    rows = np.floor(s / 2 - ahead).astype(np.int64)
+    cols = np.floor(s / 2 - left).astype(np.int64)
+    inside = (rows >= 0) & (rows < s) & (cols >= 0) & (cols < s)
+    image[rows[inside], cols[inside]] = 255
 
 
 class ScanObservation:
@@ -164,6 +183,45 @@ TIME_LEFT_SPACE = spaces.Box(0.0, 1.0, (1,), np.float32)
 def time_left(steps: int, max_steps: int) -> np.ndarray:
     """The ``time_left`` observation: ``(1,)`` float32, the share of the step limit still to come."""
     return np.array([max(0.0, 1.0 - steps / max_steps)], dtype=np.float32)
+
+
+def batch_observations(
+    phys: np.ndarray,
+    starts: np.ndarray,
+    velocity_limits: np.ndarray,
+    scan_m: np.ndarray,
+    scan_scale: np.float32,
+    local: np.ndarray,
+) -> dict[str, np.ndarray]:
+    """The exploration observation of a batch of robots, as the native vector environment builds it.
+
+    Args:
+        phys: ``(n, STATE_SIZE)`` physics states (:mod:`~realistic_indoor.sim.disc_physics`).
+        starts: ``(n, 3)`` each robot's start pose ``(x m, y m, heading rad)``: its odometry's origin.
+        velocity_limits: ``(2,)`` speed and turn-rate limits (m/s, rad/s).
+        scan_m: ``(n, n_beams)`` float32 readings (m).
+        scan_scale: ``1 / max range`` (1/m), float32.
+        local: ``(n, 1, S, S)`` uint8 local views.
+
+    Returns:
+        ``scan``, ``local_map``, ``velocity`` and ``pose``, each with a leading robot axis (new
+        arrays), equal to the bit to what :class:`ScanObservation`, :class:`LocalMapObservation`,
+        :class:`VelocityObservation` and :class:`PoseObservation` give one robot. The heading
+        is wrapped as the single robot's odometry wraps it (``math.remainder``, exact); the
+        compiled kernel's ``remainder(t + pi, 2 pi) - pi`` can differ from it in the last bit,
+        which float32 rounding now and then keeps.
+    """
+    from realistic_indoor.envs._vector_kernels import observe
+    from realistic_indoor.sim.disc_physics import THETA
+
+    heading = np.ascontiguousarray(starts[:, 2])
+    scan, local_map, velocity, pose = observe(
+        phys, np.ascontiguousarray(starts[:, 0]), np.ascontiguousarray(starts[:, 1]), heading, np.cos(heading),
+        np.sin(heading), velocity_limits, POSE_LIMIT_M, scan_m, scan_scale, local,
+    )  # fmt: skip
+    for i, (theta, theta0) in enumerate(zip(phys[:, THETA], starts[:, 2], strict=True)):
+        pose[i, 2] = math.remainder(float(theta) - float(theta0), math.tau)
+    return {"scan": scan, "local_map": local_map, "velocity": velocity, "pose": pose}
 
 
 def explore_observations(config: EnvConfig) -> dict[str, object]:

@@ -21,6 +21,7 @@ __all__ = [
     "Scene",
     "ViewFrame",
     "draw",
+    "draw_team",
     "map_image",
     "plan_image",
     "scan_end_points",
@@ -141,22 +142,51 @@ def draw(scene: Scene) -> np.ndarray:
         An ``(H, W, 3)`` uint8 image, one pixel per raster cell (fewer when the raster is
         larger than :data:`MAX_SIDE_PX`). Cost: a few milliseconds for a 2,000 m2 office.
     """
-    frame = ViewFrame(scene.raster)
-    image = plan_image(frame, scene.raster.grid)
-    mapped = frame.pool(_MAP_RANK[scene.map_grid])
+    return draw_team([scene])
+
+
+def draw_team(scenes: Sequence[Scene], base_xy: tuple[float, float] | None = None) -> np.ndarray:
+    """Draw several robots of one building, as :func:`draw` draws one.
+
+    The plan, the map and the victims are the first scene's (a team's map); every scene's
+    trajectory, scan, macro marks and robot are drawn, then the base station (a goal-yellow
+    square) if given.
+
+    Args:
+        scenes: One per robot, all of one raster, at least one.
+        base_xy: The base station's position (m), or ``None``.
+
+    Returns:
+        An ``(H, W, 3)`` uint8 image (as :func:`draw`).
+    """
+    first = scenes[0]
+    frame = ViewFrame(first.raster)
+    image = plan_image(frame, first.raster.grid)
+    mapped = frame.pool(_MAP_RANK[first.map_grid])
     image[mapped == _MAP_RANK[MAPPED_FREE]] = COLOURS["mapped_floor"]
     image[mapped == _MAP_RANK[MAPPED_OCCUPIED]] = COLOURS["mapped_wall"]
-    _draw_trajectory(image, frame, np.asarray(scene.trajectory_xy))
-    _draw_scan(image, frame, scene)
-    if scene.victims_xy is not None and len(scene.victims_xy):
-        _draw_victims(image, frame, np.asarray(scene.victims_xy), scene.victims_found)
+    for scene in scenes:
+        _draw_trajectory(image, frame, np.asarray(scene.trajectory_xy))
+    for scene in scenes:
+        _draw_scan(image, frame, scene)
+    if first.victims_xy is not None and len(first.victims_xy):
+        _draw_victims(image, frame, np.asarray(first.victims_xy), first.victims_found)
+    for scene in scenes:
+        _draw_marks(image, frame, scene)
+    for scene in scenes:
+        _draw_robot(image, frame, scene.pose, scene.radius_m)
+    if base_xy is not None:
+        _draw_square(image, frame, np.asarray(base_xy, dtype=float), _GOAL_HALF_M, COLOURS["goal"])
+    return image
+
+
+def _draw_marks(image: np.ndarray, frame: ViewFrame, scene: Scene) -> None:
+    """A pending macro decision's goal and candidate goals."""
     if scene.goal_xy is not None:
         _draw_square(image, frame, np.asarray(scene.goal_xy, dtype=float), _GOAL_HALF_M, COLOURS["goal"])
     if scene.candidates_xy is not None:
         for xy in np.asarray(scene.candidates_xy, dtype=float).reshape(-1, 2):
             _draw_square(image, frame, xy, _CANDIDATE_HALF_M, COLOURS["candidate"])
-    _draw_robot(image, frame, scene.pose, scene.radius_m)
-    return image
 
 
 def tile(frames: Sequence[np.ndarray], gap_px: int = 4) -> np.ndarray:

@@ -174,13 +174,7 @@ def describe(graph: nx.DiGraph, members: list[str]) -> str:
     return "cycle: " + ", ".join(members) + "\n" + "\n".join(sorted(links))
 
 
-KNOWN_CYCLES: dict[tuple[str, ...], str] = {
-    ("realistic_indoor.generator", "realistic_indoor.generator.like"): (
-        "generator/like.py imports generate_from and make_generator, defined in generator/__init__.py, "
-        "inside a function, and the __init__ imports like.py; the fix is in generator/: the two get a "
-        "module of their own that like.py and the __init__ import"
-    ),
-}
+KNOWN_CYCLES: dict[tuple[str, ...], str] = {}
 """Cycles left to the change that owns their folder, each with where it closes. The test fails
 once one is gone, so the entry leaves with it."""
 

@@ -12,6 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import GENERATOR_NAMES
+from realistic_indoor.generator.house import MAX_AREA_M2, MIN_AREA_M2
+from realistic_indoor.generator.make import generate_from, make_generator
+from realistic_indoor.generator.random_grid import CELL_M, MAX_UNITS, MIN_UNITS
+from realistic_indoor.generator.typed import OfficeGenerator, SchoolGenerator
 
 if TYPE_CHECKING:
     from realistic_indoor.building.building import Building
@@ -25,16 +29,13 @@ def area_limits(name: str) -> tuple[float, float]:
     Raises:
         ConfigError: For an unknown generator name.
     """
-    from realistic_indoor.generator import house, random_grid, typed
-
     if name in ("office", "school"):
-        style = (typed.OfficeGenerator if name == "office" else typed.SchoolGenerator).style
+        style = (OfficeGenerator if name == "office" else SchoolGenerator).style
         return style.min_area_m2, style.max_area_m2
     if name == "house":
-        return house.MIN_AREA_M2, house.MAX_AREA_M2
+        return MIN_AREA_M2, MAX_AREA_M2
     if name == "random":
-        cell_m2 = random_grid.CELL_M**2
-        return random_grid.MIN_UNITS**2 * cell_m2, random_grid.MAX_UNITS**2 * cell_m2
+        return MIN_UNITS**2 * CELL_M**2, MAX_UNITS**2 * CELL_M**2
     raise ConfigError(f"unknown generator {name!r}; valid: {', '.join(GENERATOR_NAMES)}")
 
 
@@ -83,8 +84,6 @@ def generate_like(
     Raises:
         ConfigError: For an unknown type, a count under 1 or a negative seed.
     """
-    from realistic_indoor.generator import generate_from, make_generator
-
     low, high = area_limits(building_type)
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         raise ConfigError(f"count must be an integer >= 1, not {count!r}")

@@ -29,9 +29,9 @@ from realistic_indoor.generator.geometry import (
     to_units,
 )
 from realistic_indoor.generator.plan import C, Plan, PlanDoor, PlanRoom, build_door
-from realistic_indoor.generator.wings.bays import BayContext, Budget, subdivide
-from realistic_indoor.generator.wings.corridors import corridor_fronts, segment_corridors
-from realistic_indoor.generator.wings.paint import Bay
+from realistic_indoor.generator.rooms.bays import BayContext, Budget, subdivide
+from realistic_indoor.generator.rooms.corridors import corridor_fronts, segment_corridors
+from realistic_indoor.generator.rooms.regions import Bay
 
 if TYPE_CHECKING:
     from collections.abc import Sequence

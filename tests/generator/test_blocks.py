@@ -12,8 +12,8 @@ from realistic_indoor.generator import make_generator
 from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS
 from realistic_indoor.generator.blocks.paint import paint_block
 from realistic_indoor.generator.blocks.section import Hall, Section, draw_section
+from realistic_indoor.generator.rooms.dims import Dims
 from realistic_indoor.generator.typed import OfficeGenerator
-from realistic_indoor.generator.wings.sizing import Dims
 from realistic_indoor.validator.building_measures import building_measures
 
 

@@ -8,7 +8,7 @@ from realistic_indoor.generator.connect import break_mazes
 from realistic_indoor.generator.doors import RULES, add_door
 from realistic_indoor.generator.geometry import to_units
 from realistic_indoor.generator.plan import Plan, PlanRoom
-from realistic_indoor.generator.wings.annex import expected_service_rooms
+from realistic_indoor.generator.rooms.annex import expected_service_rooms
 
 C, B, S = SemanticLabel.CORRIDOR, SemanticLabel.BIG, SemanticLabel.SMALL
 

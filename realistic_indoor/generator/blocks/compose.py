@@ -17,13 +17,13 @@ from typing import TYPE_CHECKING
 from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
 from realistic_indoor.generator.geometry import Rect, to_units
-from realistic_indoor.generator.wings.paint import Bay, Regions
+from realistic_indoor.generator.rooms.regions import Bay, FloorRegions
 
 if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.generator.blocks.style import BlockStyle
-    from realistic_indoor.generator.wings.sizing import Dims
+    from realistic_indoor.generator.rooms.dims import Dims
 
 __all__ = ["WINGS", "compose"]
 
@@ -46,7 +46,7 @@ def compose(
     n_halls: int,
     hall_area: float,
     wings: int | None = None,
-) -> Regions | None:
+) -> FloorRegions | None:
     """The regions of a main bar with wings for ``area`` (square units).
 
     Returns ``None`` if the wings do not fit along the main bar or a bar would be longer than
@@ -137,7 +137,9 @@ def _on_the_run(x: int, main: Section, length: int, wing: Section) -> int | None
     return corridor_x - wing.depths[0][0]
 
 
-def _attach(regions: Regions, main: Section, wing: Section, painted: Regions, x: int, k: int) -> None:
+def _attach(
+    regions: FloorRegions, main: Section, wing: Section, painted: FloorRegions, x: int, k: int
+) -> None:
     """Turn wing ``k`` a quarter, stand it on the main block's north facade at ``x``, join the corridors.
 
     The main block is one bar or a ring; the wing's corridor meets its northmost corridor.

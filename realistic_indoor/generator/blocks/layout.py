@@ -10,24 +10,27 @@ from realistic_indoor.generator.blocks.paint import length_for_area, paint_block
 from realistic_indoor.generator.blocks.section import Section, draw_section, mean_block_depth
 from realistic_indoor.generator.connect import door_habit_scale
 from realistic_indoor.generator.doors import exterior_walls
-from realistic_indoor.generator.furnish import connect_and_name, layout_dims, make_suites, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_units
 from realistic_indoor.generator.plan import B, H, Plan
-from realistic_indoor.generator.sampling import choice_index
-from realistic_indoor.generator.wings.annex import (
+from realistic_indoor.generator.rooms.annex import (
     ANNEX_SCALES,
     add_annex,
     comes_in,
     draw_annex,
     expected_service_rooms,
 )
+from realistic_indoor.generator.rooms.connect_and_name import connect_and_name
+from realistic_indoor.generator.rooms.dims import layout_dims
+from realistic_indoor.generator.rooms.from_regions import rooms_from_regions
+from realistic_indoor.generator.rooms.suites import make_suites
+from realistic_indoor.generator.sampling import choice_index
 
 if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.generator.blocks.style import BlockStyle
-    from realistic_indoor.generator.wings.paint import Regions
-    from realistic_indoor.generator.wings.sizing import Dims
+    from realistic_indoor.generator.rooms.dims import Dims
+    from realistic_indoor.generator.rooms.regions import FloorRegions
     from realistic_indoor.generator.wings.style import WingStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
@@ -89,7 +92,7 @@ def _lay_out_with_annexes(
     The block is drawn for the floor area less the annexes', so the building keeps its floor
     area whatever is left out. Each time an annex finds no free place beside a newly drawn
     block, the next draw leaves out that one (a further annex) or makes the style's annex
-    smaller (:data:`~realistic_indoor.generator.wings.annex.ANNEX_SCALES`); once that has shrunk twice in vain, the block takes the whole
+    smaller (:data:`~realistic_indoor.generator.rooms.annex.ANNEX_SCALES`); once that has shrunk twice in vain, the block takes the whole
     area.
 
     Returns:
@@ -159,7 +162,7 @@ def _one_bar_fits(area: int, dims: Dims, blocks: BlockStyle) -> bool:
 
 def _comb(
     rng: np.random.Generator, area: int, dims: Dims, blocks: BlockStyle, n_halls: int, hall_area: float
-) -> Regions | None:
+) -> FloorRegions | None:
     """A main bar with 3 or more evenly spaced wings (an E), the fewest whose bars fit; or ``None``."""
     for wings in range(3, MAX_COMB_WINGS + 1):
         regions = compose(rng, "E", area, dims, blocks, n_halls, hall_area, wings=wings)

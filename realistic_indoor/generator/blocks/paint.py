@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 from realistic_indoor.generator.blocks.section import Hall, Section
 from realistic_indoor.generator.geometry import Rect, subtract_intervals, to_units
-from realistic_indoor.generator.wings.paint import Bay, Regions
+from realistic_indoor.generator.rooms.regions import Bay, FloorRegions
 
 __all__ = ["length_for_area", "paint_block"]
 
@@ -49,10 +49,10 @@ def _frame(s: Section, length: int) -> _Frame:
     return _Frame(length, tuple(bottoms), tuple(lines), (x0, x1), crossings)
 
 
-def paint_block(s: Section, length: int) -> Regions:
+def paint_block(s: Section, length: int) -> FloorRegions:
     """The regions of a block of ``length`` (units): what the furnishing step turns into rooms."""
     f = _frame(s, length)
-    regions = Regions()
+    regions = FloorRegions()
     regions.corridors = _corridors(s, f)
     courts = _courts(s, f)
     deep = _deep(s, f)

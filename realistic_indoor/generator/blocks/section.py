@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.generator.blocks.style import BlockStyle
-    from realistic_indoor.generator.wings.sizing import Dims
+    from realistic_indoor.generator.rooms.dims import Dims
 
 __all__ = ["Hall", "Section", "draw_section", "mean_block_depth"]
 

@@ -60,7 +60,7 @@ class BlockStyle:
             or more of the floor in schools under 2,200 m2.
         more_annexes: Large rooms beside the block besides the style's annex, for large
             buildings: ``(function, area range (m2), floor areas over which it comes in (m2))``
-            each, drawn as :func:`~realistic_indoor.generator.wings.annex.draw_annex` draws the
+            each, drawn as :func:`~realistic_indoor.generator.rooms.annex.draw_annex` draws the
             annex (none below the first floor area, certain above the second, where it finds
             a place), largest first, without service rooms. Of the shared real schools of
             1,500 m2 and more, 12 of 26 have a canteen (median about 290 m2), and 7 of the 17

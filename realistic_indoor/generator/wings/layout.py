@@ -5,12 +5,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from realistic_indoor.generator.furnish import connect_and_name, layout_dims, rooms_from_regions
 from realistic_indoor.generator.geometry import area_to_units, to_metres, to_units
 from realistic_indoor.generator.plan import H, Plan
-from realistic_indoor.generator.wings.annex import add_annex, draw_annex
+from realistic_indoor.generator.rooms.annex import add_annex, draw_annex
+from realistic_indoor.generator.rooms.connect_and_name import connect_and_name
+from realistic_indoor.generator.rooms.dims import Dims, layout_dims
+from realistic_indoor.generator.rooms.from_regions import rooms_from_regions
 from realistic_indoor.generator.wings.paint import paint
-from realistic_indoor.generator.wings.sizing import MIN_GAP_M, Dims, size_skeleton
+from realistic_indoor.generator.wings.sizing import MIN_GAP_M, size_skeleton
 from realistic_indoor.generator.wings.skeleton import Skeleton, sample_shape
 
 if TYPE_CHECKING:

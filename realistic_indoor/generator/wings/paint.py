@@ -9,78 +9,17 @@ joins make every bay a rectangle that runs along its corridor, whatever the junc
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from realistic_indoor.generator.geometry import Rect
+from realistic_indoor.generator.rooms.regions import Bay, FloorRegions
 from realistic_indoor.generator.wings.skeleton import Skeleton
 
-__all__ = ["Bay", "Regions", "footprint_cells", "paint"]
+__all__ = ["footprint_cells", "paint"]
 
 Tag = tuple
 Cell = tuple[int, int]
 
 _ACCESS = {"HT": "S", "HB": "N", "VL": "E", "VR": "W"}
 """Side of a bay that faces its corridor, by bay kind (a top bay's corridor is to its south)."""
-
-
-@dataclass
-class Bay:
-    """A strip of rooms along a corridor.
-
-    Attributes:
-        rect: The strip (units).
-        axis: ``"x"`` if the strip runs along x, ``"y"`` if along y.
-        access: Side facing the corridor: ``"S"``, ``"N"``, ``"W"`` or ``"E"``.
-    """
-
-    rect: Rect
-    axis: str
-    access: str
-
-    @property
-    def length(self) -> int:
-        """Extent along the corridor (units)."""
-        x0, y0, x1, y1 = self.rect
-        return x1 - x0 if self.axis == "x" else y1 - y0
-
-    @property
-    def depth(self) -> int:
-        """Extent away from the corridor (units)."""
-        x0, y0, x1, y1 = self.rect
-        return y1 - y0 if self.axis == "x" else x1 - x0
-
-    def local(self, t0: int, t1: int, u0: int, u1: int) -> Rect:
-        """The rectangle at ``t0..t1`` along the strip and ``u0..u1`` from the corridor (units)."""
-        x0, y0, x1, y1 = self.rect
-        if self.access == "S":
-            return (x0 + t0, y0 + u0, x0 + t1, y0 + u1)
-        if self.access == "N":
-            return (x0 + t0, y1 - u1, x0 + t1, y1 - u0)
-        if self.access == "W":
-            return (x0 + u0, y0 + t0, x0 + u1, y0 + t1)
-        return (x1 - u1, y0 + t0, x1 - u0, y0 + t1)
-
-
-@dataclass
-class Regions:
-    """What a skeleton paints.
-
-    Attributes:
-        corridors: Straight corridor pieces (rectangles), before cutting into segments.
-        halls: ``(node, rectangles)`` of every hall (one rectangle until rooms are set into it).
-        bays: Room strips.
-        ends: ``(rect, corridor side)`` of the small rooms closing dead-end corridors.
-        open_ends: ``(corridor rect index, side)`` where a corridor reaches the facade.
-        holes: Courtyards: outside cells enclosed by the building.
-        area: Footprint area (square units).
-    """
-
-    corridors: list[Rect] = field(default_factory=list)
-    halls: list[tuple[tuple[int, int], list[Rect]]] = field(default_factory=list)
-    bays: list[Bay] = field(default_factory=list)
-    ends: list[Rect] = field(default_factory=list)
-    holes: list[Rect] = field(default_factory=list)
-    area: int = 0
 
 
 class _Bands:
@@ -197,14 +136,14 @@ def _junction(sk: Skeleton, X: _Bands, Y: _Bands, grid: dict[Cell, Tag], node: t
         grid.setdefault(c, ("end", i, j))
 
 
-def paint(sk: Skeleton) -> Regions:
+def paint(sk: Skeleton) -> FloorRegions:
     """Rectangles of every corridor line, hall, bay and end room of a sized skeleton."""
     X, Y, grid = footprint_cells(sk)
     xw = X.widths(sk.cols, sk.col_gaps)
     yw = Y.widths(sk.rows, sk.row_gaps)
     xs = _cumulative(xw)
     ys = _cumulative(yw)
-    out = Regions(area=sum(xw[k] * yw[m] for k, m in grid))
+    out = FloorRegions(area=sum(xw[k] * yw[m] for k, m in grid))
 
     def rect(k0: int, m0: int, k1: int, m1: int) -> Rect:
         return (xs[k0], ys[m0], xs[k1 + 1], ys[m1 + 1])

@@ -7,7 +7,6 @@ quadratic in the scale (cells are products of band widths), solved exactly.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import to_units
@@ -18,10 +17,11 @@ from realistic_indoor.generator.wings.skeleton import DIRS
 if TYPE_CHECKING:
     import numpy as np
 
+    from realistic_indoor.generator.rooms.dims import Dims
     from realistic_indoor.generator.wings.skeleton import Skeleton
     from realistic_indoor.generator.wings.style import WingStyle
 
-__all__ = ["MIN_COURT_M", "MIN_GAP_M", "Dims", "choose_halls", "choose_open_ends", "size_skeleton"]
+__all__ = ["MIN_COURT_M", "MIN_GAP_M", "choose_halls", "choose_open_ends", "size_skeleton"]
 
 MIN_GAP_M = 3.0
 """Shortest wing between two junctions (m); shorter ones would leave slivers of rooms."""
@@ -29,23 +29,6 @@ MIN_GAP_M = 3.0
 MIN_COURT_M = 9.0
 """Narrowest courtyard between two parallel wings (m); narrower ones are built over, the rooms
 on both sides growing deeper (a deep plan)."""
-
-
-@dataclass(frozen=True)
-class Dims:
-    """Building-wide sizes (grid units).
-
-    Attributes:
-        corridor: Corridor width.
-        depth: Depth of a strip of ordinary rooms.
-        shallow: Depth of a strip of small rooms.
-        hall_area: Mean hall area (square units).
-    """
-
-    corridor: int
-    depth: int
-    shallow: int
-    hall_area: int
 
 
 def choose_halls(sk: Skeleton, rng: np.random.Generator, n_halls: int, junction_share: float) -> None:

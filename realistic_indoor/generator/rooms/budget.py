@@ -8,10 +8,10 @@ from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import area_to_units
 from realistic_indoor.generator.plan import B, M, S
-from realistic_indoor.generator.wings.bays import MIN_SMALL, Budget, core_shape
+from realistic_indoor.generator.rooms.bays import MIN_SMALL, Budget, core_shape
 
 if TYPE_CHECKING:
-    from realistic_indoor.generator.wings.paint import Regions
+    from realistic_indoor.generator.rooms.regions import FloorRegions
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["building_budget"]
@@ -32,7 +32,7 @@ class _Frontage:
 
 
 def _frontage(
-    regions: Regions,
+    regions: FloorRegions,
     model: BuildingTypeModel,
     stub: int,
     core_rows: tuple[int, int],
@@ -97,7 +97,7 @@ def _deep_frontage(units: dict[str, float], f: _Frontage, model: BuildingTypeMod
 
 
 def building_budget(
-    regions: Regions,
+    regions: FloorRegions,
     model: BuildingTypeModel,
     stub: int,
     core_rows: tuple[int, int],

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import Rect, contact, to_units
-from realistic_indoor.generator.wings.paint import Bay, Regions
+from realistic_indoor.generator.rooms.regions import Bay, FloorRegions
 
 if TYPE_CHECKING:
     import numpy as np
@@ -58,7 +58,7 @@ def _options(hall: Rect, corridors: list[Rect], depth: int) -> list[tuple[list[R
     return out
 
 
-def carve_hall_bays(regions: Regions, rng: np.random.Generator, depth: int, p: float) -> None:
+def carve_hall_bays(regions: FloorRegions, rng: np.random.Generator, depth: int, p: float) -> None:
     """Set a strip of rooms (reception, cloakroom, meeting rooms) into large halls.
 
     With probability ``p`` per hall, a strip ``depth`` deep is taken along one side of the hall:

@@ -31,7 +31,7 @@ from realistic_indoor.generator.sampling import choice_index
 if TYPE_CHECKING:
     import numpy as np
 
-    from realistic_indoor.generator.wings.paint import Bay
+    from realistic_indoor.generator.rooms.regions import Bay
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["BayContext", "Budget", "Unit", "core_shape", "label_for_area", "subdivide"]

@@ -7,8 +7,10 @@ from typing import TYPE_CHECKING, ClassVar
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
-from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS, BlockStyle, block_plan
-from realistic_indoor.generator.wings import OFFICE_STYLE, SCHOOL_STYLE, WingStyle, wing_plan
+from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS, BlockStyle, block_layout
+from realistic_indoor.generator.rooms.style import OFFICE_STYLE, SCHOOL_STYLE, TypeStyle
+from realistic_indoor.generator.template import lay_out
+from realistic_indoor.generator.wings import OFFICE_WINGS, SCHOOL_WINGS, WingStyle, wing_layout
 from realistic_indoor.models.building_model import BuildingTypeModel, default_model, real_model
 
 if TYPE_CHECKING:
@@ -34,7 +36,7 @@ def model_params(model: BuildingTypeModel, default: BuildingTypeModel) -> dict[s
 
 
 @dataclass(frozen=True)
-class _WingGenerator:
+class _TypedGenerator:
     """Shared body of the office and school generators (see :class:`OfficeGenerator`)."""
 
     area_m2: float = 2000.0
@@ -42,8 +44,9 @@ class _WingGenerator:
     layout: str | None = None
 
     name: ClassVar[str] = "office"
-    style: ClassVar[WingStyle] = OFFICE_STYLE
+    style: ClassVar[TypeStyle] = OFFICE_STYLE
     blocks: ClassVar[BlockStyle] = OFFICE_BLOCKS
+    wings: ClassVar[WingStyle] = OFFICE_WINGS
 
     def __post_init__(self) -> None:
         area = check_area(self.name, self.area_m2, self.style.min_area_m2, self.style.max_area_m2)
@@ -73,19 +76,20 @@ class _WingGenerator:
         """A new building of about :attr:`area_m2` drawn with ``rng``."""
         model = self.type_model.at_area(self.area_m2, rng)
         if self.layout_name == "wings":
-            plan, facts = wing_plan(rng, self.area_m2, model, self.style)
+            layout = wing_layout(model, self.style, self.wings)
         else:
-            plan, facts = block_plan(rng, self.area_m2, model, self.style, self.blocks)
+            layout = block_layout(model, self.style, self.blocks)
+        plan, painted = lay_out(layout, rng, self.area_m2)
         custom = isinstance(self.model, BuildingTypeModel)
         btype = model.building_type.value if custom else self.name
         params = {"area_m2": self.area_m2, **model_params(self.type_model, real_model(self.name))}
         if self.layout is not None:
             params["layout"] = self.layout
-        return finish(plan, rng, btype, {"generator": self.name, "params": params, **facts})
+        return finish(plan, rng, btype, {"generator": self.name, "params": params, "shape": painted.shape})
 
 
 @dataclass(frozen=True)
-class OfficeGenerator(_WingGenerator):
+class OfficeGenerator(_TypedGenerator):
     """Offices: compact blocks of rooms on double-loaded and ring corridors, halls, service cores.
 
     The default layout (``"blocks"``) makes the compact deep plans real offices have: one block
@@ -119,11 +123,11 @@ class OfficeGenerator(_WingGenerator):
     area_m2: float = DEFAULT_AREAS_M2["office"]
 
     name: ClassVar[str] = "office"
-    style: ClassVar[WingStyle] = OFFICE_STYLE
+    style: ClassVar[TypeStyle] = OFFICE_STYLE
 
 
 @dataclass(frozen=True)
-class SchoolGenerator(_WingGenerator):
+class SchoolGenerator(_TypedGenerator):
     """Schools: classrooms on both sides of corridors, halls, labs, a gym; courtyards in larger ones.
 
     Same layouts as :class:`OfficeGenerator` with a school's conventions: wider corridors,
@@ -145,5 +149,6 @@ class SchoolGenerator(_WingGenerator):
     area_m2: float = DEFAULT_AREAS_M2["school"]
 
     name: ClassVar[str] = "school"
-    style: ClassVar[WingStyle] = SCHOOL_STYLE
+    style: ClassVar[TypeStyle] = SCHOOL_STYLE
     blocks: ClassVar[BlockStyle] = SCHOOL_BLOCKS
+    wings: ClassVar[WingStyle] = SCHOOL_WINGS

@@ -89,24 +89,27 @@ def _annexes(building, function, low_m2, high_m2):
 def test_more_annexes__none_below_1500_m2_and_no_random_draw():
     import numpy as np
 
-    from realistic_indoor.generator.blocks.layout import _more_annexes
     from realistic_indoor.generator.blocks.style import SCHOOL_BLOCKS
+    from realistic_indoor.generator.rooms.annex import more_annexes
 
     rng = np.random.default_rng(0)
     before = rng.bit_generator.state
-    assert _more_annexes(rng, 1499.0, SCHOOL_BLOCKS) == []
+    assert more_annexes(rng, 1499.0, SCHOOL_BLOCKS.more_annexes, SCHOOL_BLOCKS.more_annex_share) == []
     assert rng.bit_generator.state == before  # small schools keep their draws
 
 
 def test_more_annexes__canteen_from_1500_auditorium_from_2500_both_certain_from_6000_m2():
     import numpy as np
 
-    from realistic_indoor.generator.blocks.layout import _more_annexes
     from realistic_indoor.generator.blocks.style import SCHOOL_BLOCKS
+    from realistic_indoor.generator.rooms.annex import more_annexes
+
+    def drawn(rng, area_m2):
+        return more_annexes(rng, area_m2, SCHOOL_BLOCKS.more_annexes, SCHOOL_BLOCKS.more_annex_share)
 
     def functions(area_m2, seeds=200):
         rngs = (np.random.default_rng(seed) for seed in range(seeds))
-        return [[f for f, _ in _more_annexes(rng, area_m2, SCHOOL_BLOCKS)] for rng in rngs]
+        return [[a.function for a in drawn(rng, area_m2)] for rng in rngs]
 
     at_2400 = functions(2400.0)
     assert all("conference" not in f for f in at_2400)
@@ -114,12 +117,10 @@ def test_more_annexes__canteen_from_1500_auditorium_from_2500_both_certain_from_
     assert 0.12 <= sum("canteen" in f for f in at_2400) / len(at_2400) <= 0.28
     assert all(f == ["conference", "canteen"] for f in functions(6000.0))  # largest first
     # at most 15% of the floor each: at 3,000 m2 every auditorium (450-850 m2) is cut to 450 m2
-    drawn = [
-        a for seed in range(50) for a in _more_annexes(np.random.default_rng(seed), 3000.0, SCHOOL_BLOCKS)
-    ]
-    auditoriums = [area for function, area in drawn if function == "conference"]
+    annexes = [a for seed in range(50) for a in drawn(np.random.default_rng(seed), 3000.0)]
+    auditoriums = [a.area_m2 for a in annexes if a.function == "conference"]
     assert auditoriums and all(area == 450.0 for area in auditoriums)
-    assert all(200.0 <= area <= 400.0 for function, area in drawn if function == "canteen")
+    assert all(200.0 <= a.area_m2 <= 400.0 for a in annexes if a.function == "canteen")
 
 
 def test_large_schools__get_a_canteen_and_an_auditorium_beside_the_gym_mostly():

@@ -7,7 +7,7 @@ from realistic_indoor.building import SemanticLabel, check_building
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.generator import area_limits, generate, make_generator
 from realistic_indoor.generator.rooms.annex import draw_annex
-from realistic_indoor.generator.wings import SCHOOL_STYLE
+from realistic_indoor.generator.rooms.style import SCHOOL_STYLE
 from realistic_indoor.io.json_format import dumps
 from realistic_indoor.validator.connectivity import room_mazes
 

@@ -12,7 +12,7 @@ from realistic_indoor.generator.plan import C, H, M, S
 if TYPE_CHECKING:
     import numpy as np
 
-    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.generator.rooms.style import TypeStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["Dims", "layout_dims"]
@@ -39,7 +39,7 @@ def _clamp(v: float, lo_hi: tuple[float, float]) -> float:
     return min(max(v, lo_hi[0]), lo_hi[1])
 
 
-def layout_dims(rng: np.random.Generator, model: BuildingTypeModel, style: WingStyle) -> Dims:
+def layout_dims(rng: np.random.Generator, model: BuildingTypeModel, style: TypeStyle) -> Dims:
     """Corridor width and room depths from the model's corridors, medium and small rooms.
 
     A corridor of mean area ``a`` and axes ratio ``r`` is ``sqrt(a / r)`` wide; a strip of rooms

@@ -12,7 +12,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from realistic_indoor.generator.plan import Plan
-    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.generator.rooms.style import TypeStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
 __all__ = ["add_entrances", "choose_lobby"]
@@ -38,7 +38,7 @@ def choose_lobby(plan: Plan) -> int:
 
 
 def add_entrances(
-    plan: Plan, rng: np.random.Generator, lobby: int, style: WingStyle, model: BuildingTypeModel
+    plan: Plan, rng: np.random.Generator, lobby: int, style: TypeStyle, model: BuildingTypeModel
 ) -> None:
     """The main entrance in the lobby (or at a corridor end), side doors in halls, exits at corridor ends.
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import Rect, to_units
@@ -17,35 +18,59 @@ if TYPE_CHECKING:
 
     from realistic_indoor.generator.rooms.dims import Dims
     from realistic_indoor.generator.rooms.regions import FloorRegions
-    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.generator.rooms.style import TypeStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["rooms_from_regions"]
+__all__ = ["RoomRules", "rooms_from_regions"]
+
+
+@dataclass(frozen=True)
+class RoomRules:
+    """A layout's conventions for cutting its regions into rooms.
+
+    Attributes:
+        corridor_cuts: How many corridor segments to cut, as a share of the number the model's
+            corridor share asks for.
+        hall_rooms_p: Probability that a large hall gets a strip of rooms along a side (see
+            :func:`~realistic_indoor.generator.rooms.halls.carve_hall_bays`); ``None``: halls
+            keep their floor (and nothing is drawn).
+        max_axes_ratio: Rooms are at least a strip's depth over this wide (see
+            :class:`~realistic_indoor.generator.rooms.bays.BayContext`).
+        widen_last_room: See :class:`~realistic_indoor.generator.rooms.bays.BayContext`.
+    """
+
+    corridor_cuts: float = 1.0
+    hall_rooms_p: float | None = None
+    max_axes_ratio: float = math.inf
+    widen_last_room: bool = False
 
 
 def rooms_from_regions(
     regions: FloorRegions,
     rng: np.random.Generator,
     model: BuildingTypeModel,
-    style: WingStyle,
+    style: TypeStyle,
     dims: Dims,
-    hall_rooms: bool = True,
-    corridor_cuts: float | None = None,
-    max_axes_ratio: float = math.inf,
-    widen_last_room: bool = False,
+    rules: RoomRules,
     placed_small: float = 0.0,
 ) -> Plan:
     """Halls, rooms cut from the strips, end rooms and corridor segments of painted regions.
 
-    With ``hall_rooms``, large halls get a strip of rooms along a side (see
-    :func:`~realistic_indoor.generator.rooms.halls.carve_hall_bays`); ``corridor_cuts``
-    overrides the style's share of corridor segments to cut; rooms are at least a strip's depth
-    over ``max_axes_ratio`` wide; ``widen_last_room``: see
-    :class:`~realistic_indoor.generator.rooms.bays.BayContext`; ``placed_small``: small rooms
-    the building gets besides these (see :func:`~realistic_indoor.generator.rooms.budget.building_budget`).
+    Args:
+        regions: The painted footprint (its halls may give up a strip of rooms).
+        rng: The building's random generator.
+        model: The building-type model (label shares, areas, structures).
+        style: The type's conventions (rooms per service core).
+        dims: Corridor width and strip depths (units).
+        rules: The layout's conventions.
+        placed_small: Small rooms the building gets besides these (see
+            :func:`~realistic_indoor.generator.rooms.budget.building_budget`).
+
+    Returns:
+        The plan: rooms without doors.
     """
-    if hall_rooms:
-        carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), style.hall_rooms_p)
+    if rules.hall_rooms_p is not None:
+        carve_hall_bays(regions, rng, round(dims.depth * rng.uniform(0.8, 1.0)), rules.hall_rooms_p)
     plan = Plan(exterior_holes=regions.holes)
     for _, rects in regions.halls:
         plan.add(PlanRoom(rects, H, role="hall"))
@@ -54,14 +79,13 @@ def rooms_from_regions(
     limit = (dims.depth + dims.shallow) // 2
     budget = building_budget(regions, model, stub, style.core_rooms, limit, placed_small)
     ctx = BayContext(
-        model, budget, circulation, stub, style.core_rooms, limit, max_axes_ratio, widen_last_room
+        model, budget, circulation, stub, style.core_rooms, limit, rules.max_axes_ratio, rules.widen_last_room
     )
     for k in rng.permutation(len(regions.bays)):
         subdivide(plan, regions.bays[int(k)], rng, ctx)
     for rect in regions.ends:
         plan.add(PlanRoom([rect], S, role="end"))
-    cuts = style.corridor_cuts if corridor_cuts is None else corridor_cuts
-    _corridors(plan, regions, model, rng, dims, cuts)
+    _corridors(plan, regions, model, rng, dims, rules.corridor_cuts)
     return plan
 
 

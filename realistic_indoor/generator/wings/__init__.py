@@ -1,6 +1,6 @@
-"""The wing layout shared by offices and schools: corridor skeleton, room strips, service cores."""
+"""The wing layout: a footprint painted as wings along a corridor skeleton (the paper's offices and schools)."""
 
-from realistic_indoor.generator.wings.layout import wing_plan
-from realistic_indoor.generator.wings.style import OFFICE_STYLE, SCHOOL_STYLE, WingStyle
+from realistic_indoor.generator.wings.layout import SkeletonPainter, wing_layout
+from realistic_indoor.generator.wings.style import OFFICE_WINGS, SCHOOL_WINGS, WingStyle
 
-__all__ = ["OFFICE_STYLE", "SCHOOL_STYLE", "WingStyle", "wing_plan"]
+__all__ = ["OFFICE_WINGS", "SCHOOL_WINGS", "SkeletonPainter", "WingStyle", "wing_layout"]

@@ -1,16 +1,17 @@
-"""The wing layout of offices and schools: skeleton, rooms, corridors, doors, functions."""
+"""The wing layout of offices and schools: a footprint painted as wings along a corridor skeleton."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from realistic_indoor.generator.geometry import area_to_units, to_metres, to_units
-from realistic_indoor.generator.plan import H, Plan
-from realistic_indoor.generator.rooms.annex import add_annex, draw_annex
-from realistic_indoor.generator.rooms.connect_and_name import connect_and_name
-from realistic_indoor.generator.rooms.dims import Dims, layout_dims
-from realistic_indoor.generator.rooms.from_regions import rooms_from_regions
+from realistic_indoor.generator.plan import H
+from realistic_indoor.generator.rooms.annex import AnnexRules
+from realistic_indoor.generator.rooms.connect_and_name import DoorRules
+from realistic_indoor.generator.rooms.from_regions import RoomRules
+from realistic_indoor.generator.rooms.region_layout import Painted, RegionLayout
 from realistic_indoor.generator.wings.paint import paint
 from realistic_indoor.generator.wings.sizing import MIN_GAP_M, size_skeleton
 from realistic_indoor.generator.wings.skeleton import Skeleton, sample_shape
@@ -18,10 +19,46 @@ from realistic_indoor.generator.wings.skeleton import Skeleton, sample_shape
 if TYPE_CHECKING:
     import numpy as np
 
+    from realistic_indoor.generator.rooms.dims import Dims
+    from realistic_indoor.generator.rooms.style import TypeStyle
     from realistic_indoor.generator.wings.style import WingStyle
     from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["wing_plan"]
+__all__ = ["SkeletonPainter", "wing_layout"]
+
+
+def wing_layout(model: BuildingTypeModel, style: TypeStyle, wings: WingStyle) -> RegionLayout:
+    """The wing layout of a building type, for the layout template.
+
+    The paper's conventions for the rest: an annex (a school's gym) is a hall with cubicles
+    along its far side, tried smaller where it finds no place, and laid out without where even
+    that fails; rooms keep every door the model's door counts ask for.
+
+    Args:
+        model: The building-type model, set to the building's size.
+        style: The type's conventions.
+        wings: The type's conventions for wings.
+    """
+    rooms = RoomRules(corridor_cuts=wings.corridor_cuts, hall_rooms_p=wings.hall_rooms_p)
+    return RegionLayout(model, style, SkeletonPainter(wings), rooms, AnnexRules(), DoorRules())
+
+
+@dataclass(frozen=True)
+class SkeletonPainter:
+    """Paints a footprint as wings along a corridor skeleton (a :class:`~realistic_indoor.generator.rooms.region_layout.Painter`).
+
+    Attributes:
+        wings: The type's conventions for wings.
+    """
+
+    wings: WingStyle
+
+    def __call__(
+        self, rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, dims: Dims
+    ) -> Painted:
+        """A sized skeleton of about ``area_m2`` (m2), painted; its shape family names the footprint."""
+        sk = _skeleton(rng, area_m2, dims, model, self.wings)
+        return Painted(paint(sk), dims, sk.shape)
 
 
 def _skeleton(
@@ -53,37 +90,3 @@ def _skeleton(
         if cost == 0:
             break
     return best
-
-
-def wing_plan(
-    rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, style: WingStyle
-) -> tuple[Plan, dict[str, str]]:
-    """Lay out a wing building of about ``area_m2``.
-
-    An annex (a school's gym) takes up to a quarter of the area (small buildings may have none,
-    see ``draw_annex``); where it finds no free place beside the wings, the wings are laid out
-    again over the whole area.
-
-    Returns:
-        The plan (rooms, doors, functions) and facts about the layout for the metadata
-        (``shape``).
-    """
-    annex_m2, style = draw_annex(rng, area_m2, style)
-    laid = _lay_out(rng, area_m2, model, style, annex_m2)
-    if laid is None:
-        laid = _lay_out(rng, area_m2, model, style, 0.0)
-    plan, sk = laid
-    connect_and_name(plan, rng, model, style)
-    return plan, {"shape": sk.shape}
-
-
-def _lay_out(
-    rng: np.random.Generator, area_m2: float, model: BuildingTypeModel, style: WingStyle, annex_m2: float
-) -> tuple[Plan, Skeleton] | None:
-    """Rooms and corridors of the wings and the annex (``None`` if the annex found no place)."""
-    dims = layout_dims(rng, model, style)
-    sk = _skeleton(rng, area_m2 - annex_m2, dims, model, style)
-    plan = rooms_from_regions(paint(sk), rng, model, style, dims)
-    if annex_m2 and add_annex(plan, rng, style, annex_m2) < 0:
-        return None
-    return plan, sk

@@ -1,9 +1,8 @@
-"""A large hall beside the wings (a school's gym), reached from a corridor end or a hall."""
+"""Where an annex stands: outside a corridor end or a hall's facade, its service rooms along its far side."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from realistic_indoor.building.labels import SemanticLabel
@@ -16,48 +15,14 @@ if TYPE_CHECKING:
 
     import numpy as np
 
-    from realistic_indoor.generator.wings.style import WingStyle
+    from realistic_indoor.generator.rooms.style import TypeStyle
 
-__all__ = ["ANNEX_RATIO", "ANNEX_SCALES", "add_annex", "comes_in", "draw_annex", "expected_service_rooms"]
+__all__ = ["ANNEX_RATIO", "ANNEX_SCALES", "add_annex", "expected_service_rooms"]
 
 ANNEX_SCALES = (1.0, 0.8, 0.65)
 """Shares of its area an annex is tried at, in turn, while it finds no free place."""
 ANNEX_RATIO = (1.3, 1.9)
 """Range of an annex's long side over its short side, drawn uniformly."""
-
-
-def draw_annex(rng: np.random.Generator, area_m2: float, style: WingStyle) -> tuple[float, WingStyle]:
-    """The annex's area for a building of ``area_m2`` (m2) and the style to lay it out with.
-
-    The annex takes the style's range of area, at most a quarter of the building's. A building
-    smaller than the style's ``annex_from_m2`` may have none (certainly none below its first
-    value): its area is then 0, and the style returned no longer requires the annex's function
-    of another room (a small school has no gym, where a larger one whose annex found no place
-    gives the name to a hall).
-    """
-    if not style.annex:
-        return 0.0, style
-    area = min(rng.uniform(*style.annex_area_m2), 0.25 * area_m2)
-    if comes_in(rng, area_m2, style.annex_from_m2):
-        return area, style
-    required = tuple(f for f in style.required_functions if f != style.annex)
-    return 0.0, replace(style, required_functions=required)
-
-
-def comes_in(rng: np.random.Generator, area_m2: float, from_m2: tuple[float, float]) -> bool:
-    """Whether a building gets something that comes in over a range of floor areas.
-
-    Args:
-        rng: The building's random generator; one number is drawn below ``from_m2[1]`` only.
-        area_m2: The building's floor area (m2).
-        from_m2: Floor areas (m2): none at the first, certainly from the second, and in
-            between with a probability growing linearly.
-
-    Returns:
-        Whether it comes in.
-    """
-    low, high = from_m2
-    return area_m2 >= high or rng.random() < (area_m2 - low) / (high - low)
 
 
 def _outward(plan: Plan, i: int, w: Contact) -> int:
@@ -89,7 +54,7 @@ def _built(plan: Plan, strip: Rect) -> bool:
 def add_annex(
     plan: Plan,
     rng: np.random.Generator,
-    style: WingStyle,
+    style: TypeStyle,
     area_m2: float,
     label: SemanticLabel = SemanticLabel.HALL,
     keep_clear: Sequence[Contact] = (),
@@ -178,7 +143,7 @@ def _fit(plan: Plan, w: Contact, sign: int, long_side: float, short_side: float)
 def _place(
     plan: Plan,
     rng: np.random.Generator,
-    style: WingStyle,
+    style: TypeStyle,
     room: PlanRoom,
     axis: str,
     sign: int,

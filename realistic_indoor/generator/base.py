@@ -12,8 +12,9 @@ if TYPE_CHECKING:
 
     from realistic_indoor.building.building import Building
     from realistic_indoor.generator.plan import Plan
+    from realistic_indoor.models.building_model import BuildingTypeModel
 
-__all__ = ["DEFAULT_AREAS_M2", "GENERATOR_NAMES", "Generator", "check_area", "finish"]
+__all__ = ["DEFAULT_AREAS_M2", "GENERATOR_NAMES", "Generator", "check_area", "finish", "model_params"]
 
 GENERATOR_NAMES = ("office", "school", "house", "random")
 """Names accepted by :func:`realistic_indoor.generator.generate` and ``make_generator``."""
@@ -55,3 +56,10 @@ def finish(plan: Plan, rng: np.random.Generator, building_type: str, metadata: d
     swap, flip_x, flip_y = (bool(b) for b in rng.random(3) < 0.5)
     plan.transform(swap, flip_x, flip_y)
     return plan.to_building(building_type, metadata)
+
+
+def model_params(model: BuildingTypeModel, default: BuildingTypeModel) -> dict[str, str]:
+    """What the metadata says about the model: nothing for the default one, else its name and source."""
+    if model is default:
+        return {}
+    return {"model": model.name, "model_source": model.source}

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, ClassVar
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish
+from realistic_indoor.generator.base import DEFAULT_AREAS_M2, check_area, finish, model_params
 from realistic_indoor.generator.blocks import OFFICE_BLOCKS, SCHOOL_BLOCKS, BlockStyle, block_layout
 from realistic_indoor.generator.rooms.style import OFFICE_STYLE, SCHOOL_STYLE, TypeStyle
 from realistic_indoor.generator.template import lay_out
@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 
     from realistic_indoor.building.building import Building
 
-__all__ = ["LAYOUTS", "MODEL_NAMES", "OfficeGenerator", "SchoolGenerator", "model_params"]
+__all__ = ["LAYOUTS", "MODEL_NAMES", "OfficeGenerator", "SchoolGenerator"]
 
 LAYOUTS = ("blocks", "wings")
 """Layouts of offices and schools: compact blocks of double-loaded and ring corridors (the
@@ -26,13 +26,6 @@ default), or wings along a corridor skeleton (the paper's Table-1 reproduction).
 
 MODEL_NAMES = ("real", "paper")
 """Named models: fitted to the shared real plans (the default), or the paper's Table 1."""
-
-
-def model_params(model: BuildingTypeModel, default: BuildingTypeModel) -> dict[str, str]:
-    """What the metadata says about the model: nothing for the default one, else its name and source."""
-    if model is default:
-        return {}
-    return {"model": model.name, "model_source": model.source}
 
 
 @dataclass(frozen=True)

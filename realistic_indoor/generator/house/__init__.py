@@ -9,7 +9,11 @@
 - :mod:`~realistic_indoor.generator.house.bands`: rooms side by side along a hallway;
 - :mod:`~realistic_indoor.generator.house.rooms`: the rooms put on the plan;
 - :mod:`~realistic_indoor.generator.house.doors`: front door, day rooms, night rooms;
-- :mod:`~realistic_indoor.generator.house.generator`: :class:`HouseGenerator`, which runs them.
+- :mod:`~realistic_indoor.generator.house.steps`: these as the steps of the layout template
+  (:mod:`~realistic_indoor.generator.template`): the programme fitted to a frame (rooms left
+  out until one fits), rooms, doors and size labels;
+- :mod:`~realistic_indoor.generator.house.generator`: :class:`HouseGenerator`, which lays a
+  house out in those steps.
 """
 
 from realistic_indoor.generator.house.generator import MAX_AREA_M2, MIN_AREA_M2, HouseGenerator

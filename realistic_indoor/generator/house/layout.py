@@ -51,7 +51,7 @@ NARROW_COST = 0.1
 """Cost of a day zone narrowed for the night rooms to fit (see :func:`frame`)."""
 NEAR_COST = 0.3
 """How much more than the cheapest a frame may cost before rooms are left out instead (see
-:func:`realistic_indoor.generator.house.generator.HouseGenerator`)."""
+:func:`realistic_indoor.generator.house.steps.fit_frame`)."""
 LEAST_AREA = {kind: area_to_units(size.min_m2) for kind, size in SIZES.items()}
 """Least area of each kind of room (square units): the low end of its range in :data:`SIZES`."""
 MIN_DAY_ROOM = to_units(2.6)

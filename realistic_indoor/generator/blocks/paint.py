@@ -50,7 +50,7 @@ def _frame(s: Section, length: int) -> _Frame:
 
 
 def paint_block(s: Section, length: int) -> FloorRegions:
-    """The regions of a block of ``length`` (units): what the furnishing step turns into rooms."""
+    """The regions of a block of ``length`` (units): what the room toolkit turns into rooms."""
     f = _frame(s, length)
     regions = FloorRegions()
     regions.corridors = _corridors(s, f)

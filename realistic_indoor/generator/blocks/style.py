@@ -14,7 +14,7 @@ class BlockStyle:
     Attributes:
         aspect: Range of the footprint's length over its depth, drawn log-uniformly (>= 1).
         facade_scale: Range of the depth of a strip of rooms on the facade over the type's
-            strip depth (the model's, see ``furnish.layout_dims``).
+            strip depth (the model's, see ``rooms.dims.layout_dims``).
         core_scale: Range of the depth of a strip of rooms inside the block (back to back with
             another across the core) over the depth of a strip on the facade.
         section_m: Range of the distance between two corridors crossing the core (m).
@@ -31,14 +31,14 @@ class BlockStyle:
         hall_area_scale: The halls' area over the model's mean hall area.
         through_hall_p: Probability that a hall across a core reaches both corridors beside
             it (else it takes one strip and opens onto one corridor).
-        corridor_scale: Corridor width over the width the wing layout would use.
+        corridor_scale: Corridor width over the type's (see ``rooms.dims.layout_dims``).
         doors_per_room: Most further doors one room gets (see ``connect_rooms``).
         compositions: Relative frequency of each footprint: ``"I"`` one block, ``"L"``, ``"T"``
             and ``"U"`` a main bar with wings (see ``blocks.compose``).
         max_axes_ratio: Rooms are at least their strip's depth over this wide (real offices'
             medium and big rooms have axes ratios of 1.4-1.5 on average).
         suites: Make the model's connected pairs of medium and big rooms suites (one room
-            entered only through the other, see ``furnish.make_suites``) instead of two rooms
+            entered only through the other, see ``rooms.suites.make_suites``) instead of two rooms
             with a corridor door each and a door between them: real plans' connected rooms are
             mostly reached through each other, so most of their rooms keep one door.
         max_bar_m: Longest bar of a composed footprint (m); larger buildings are one block.
@@ -54,7 +54,7 @@ class BlockStyle:
             length along it each takes (m): a school gym's changing rooms and stores are group
             rooms of about 30 m2 in the real plans, not cubicles.
         annex_area_m2: Range of the annex's area (m2) in this layout, its service rooms
-            included, in place of the wing style's (``None``: the wing style's); at most a
+            included, in place of the type style's (``None``: the type style's); at most a
             quarter of the floor area, a cap that binds below about 2,000-3,400 m2. The gyms of
             the shared real schools have 486-868 m2 (median 579 m2; one of 2,167 m2), a quarter
             or more of the floor in schools under 2,200 m2.

@@ -1,20 +1,22 @@
 """Benchmark of robot teams: a team step as a multiple of single-robot steps, and memory per robot.
 
 In one process, on default offices (``OfficeExplore-v0``), random actions, CPU time
-(``time.process_time``), the median of five blocks of 100 steps after 50 warm-up steps:
+(``time.process_time``), blocks of 100 steps after 50 warm-up steps:
 
 1. the yardstick, ``CartPole-v1`` (``gym.make``, random actions, the same loop);
-2. the native vector environment with one robot (``gym.make_vec(..., num_envs=1)``): the
-   single-robot step on the same compiled core;
-3. teams of 1, 2, 4 and 8 robots (``teams.parallel_env``), with the default links and map
-   sharing (``wss``, ``comm``) and with ``unlimited`` links and a ``shared`` map.
+2. teams of 1, 2, 4 and 8 robots (``teams.parallel_env``), with the default links and map
+   sharing (``wss``, ``comm``) and with ``unlimited`` links and a ``shared`` map, each against
+   the native vector environment with one robot (``gym.make_vec(..., num_envs=1)``: the
+   single-robot step on the same compiled core), five blocks of each in turn.
 
-Each team row gives the step time, its ratio to ``n`` single-robot steps (issue 33 asks at most
-1.3 with 4 and 8 robots, default settings), and the batch's memory per robot (world, maps).
+Each team row gives the median step times, the median of the blocks' ratios of a team step to
+``n`` single-robot steps (blocks in turn, so that a machine whose load swings compares like with
+like; issue 33 asks at most 1.3 with 4 and 8 robots, default settings), and the batch's memory
+per robot (world, maps).
 
 Usage::
 
-    .venv/bin/python benchmarks/bench_teams.py            # about 20 seconds
+    .venv/bin/python benchmarks/bench_teams.py            # about 30 seconds
     .venv/bin/python benchmarks/bench_teams.py --quick    # one size, one setting
 """
 
@@ -36,19 +38,16 @@ BLOCKS, BLOCK_STEPS, WARM = 5, 100, 50
 SETTINGS = (("wss", "comm"), ("unlimited", "shared"))
 
 
-def _median_step_s(step, blocks: int = BLOCKS) -> float:
-    """The median over blocks of the CPU time of one call of ``step`` (s)."""
-    times = []
-    for _ in range(blocks):
-        start = time.process_time()
-        for _ in range(BLOCK_STEPS):
-            step()
-        times.append((time.process_time() - start) / BLOCK_STEPS)
-    return statistics.median(times)
+def _block_s(step) -> float:
+    """The CPU time of one call of ``step``, over a block of :data:`BLOCK_STEPS` calls (s)."""
+    start = time.process_time()
+    for _ in range(BLOCK_STEPS):
+        step()
+    return (time.process_time() - start) / BLOCK_STEPS
 
 
 def cartpole_step_s() -> float:
-    """CartPole-v1's step time with random actions (s), the yardstick."""
+    """CartPole-v1's step time with random actions (s), the yardstick: the median of the blocks."""
     env = gym.make("CartPole-v1")
     env.reset(seed=0)
 
@@ -57,34 +56,47 @@ def cartpole_step_s() -> float:
         if terminated or truncated:
             env.reset()
 
-    return _median_step_s(step)
+    return statistics.median(_block_s(step) for _ in range(BLOCKS))
 
 
-def single_step_s(seed: int) -> float:
-    """The native vector environment's step time with one robot (s): a single-robot step."""
+def single_stepper(seed: int):
+    """A step of the native vector environment with one robot: a single-robot step."""
     envs = gym.make_vec(ENV_ID, num_envs=1)
     envs.reset(seed=seed)
     rng = np.random.default_rng(seed)
-    for _ in range(WARM):
-        envs.step(rng.uniform(-1, 1, (1, 2)).astype(np.float32))
-    return _median_step_s(lambda: envs.step(rng.uniform(-1, 1, (1, 2)).astype(np.float32)))
+    return lambda: envs.step(rng.uniform(-1, 1, (1, 2)).astype(np.float32))
 
 
-def team_step_s(n: int, comm: str, sharing: str, seed: int) -> tuple[float, float]:
-    """Median step time (s) and the batch's memory per robot (MB) of a team of ``n``."""
+def team_stepper(n: int, comm: str, sharing: str, seed: int):
+    """A step of a team of ``n`` robots, and the team env."""
     env = teams.parallel_env(ENV_ID, n_robots=n, comm=comm, map_sharing=sharing)
     env.reset(seed=seed)
     rng = np.random.default_rng(seed)
 
     def step():
-        actions = {a: rng.uniform(-1, 1, 2).astype(np.float32) for a in env.agents}
-        env.step(actions)
+        env.step({a: rng.uniform(-1, 1, 2).astype(np.float32) for a in env.agents})
         if not env.agents:
             env.reset()
 
+    return step, env
+
+
+def compare(n: int, comm: str, sharing: str, seed: int) -> tuple[float, float, float, float]:
+    """A team's step against a single robot's, block by block in turn (load swings hit both).
+
+    Returns:
+        Median team step (s), median single step (s), the median of the blocks' ratios of a team
+        step to ``n`` single steps, and the batch's memory per robot (MB).
+    """
+    single = single_stepper(seed)
+    team, env = team_stepper(n, comm, sharing, seed)
     for _ in range(WARM):
-        step()
-    return _median_step_s(step), env.simulation.batch.nbytes / n / 1e6
+        single()
+        team()
+    pairs = [(_block_s(team), _block_s(single)) for _ in range(BLOCKS)]
+    ratio = statistics.median(t / (n * s) for t, s in pairs)
+    mb = env.simulation.batch.nbytes / n / 1e6
+    return statistics.median(t for t, _ in pairs), statistics.median(s for _, s in pairs), ratio, mb
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -96,16 +108,17 @@ def main(argv: list[str] | None = None) -> None:
     print(f"# Robot teams ({ENV_ID}, CPU time, median of {BLOCKS} blocks of {BLOCK_STEPS} steps)\n")
     print(f"Machine: {describe_machine()}\n")
     cartpole = cartpole_step_s()
-    single = single_step_s(args.seed)
-    print(f"CartPole-v1: {1 / cartpole:,.0f} steps/s. Single robot (make_vec, N = 1): "
-          f"{single * 1e6:.0f} us a step, {cartpole / single:.3f} x CartPole-v1.\n")  # fmt: skip
-    print("| robots | comm | map_sharing | us a team step | x n single-robot steps | MB per robot |")
-    print("|---:|---|---|---:|---:|---:|")
+    print(f"CartPole-v1: {1 / cartpole:,.0f} steps/s.\n")
+    print("| robots | comm | map_sharing | us a team step | us a single-robot step | x n single-robot steps "
+          "| MB per robot |")  # fmt: skip
+    print("|---:|---|---|---:|---:|---:|---:|")
     sizes, settings = ((4,), SETTINGS[:1]) if args.quick else ((1, 2, 4, 8), SETTINGS)
     for comm, sharing in settings:
         for n in sizes:
-            step, mb = team_step_s(n, comm, sharing, args.seed)
-            print(f"| {n} | {comm} | {sharing} | {step * 1e6:.0f} | {step / (n * single):.2f} | {mb:.1f} |")
+            team, single, ratio, mb = compare(n, comm, sharing, args.seed)
+            print(
+                f"| {n} | {comm} | {sharing} | {team * 1e6:.0f} | {single * 1e6:.0f} | {ratio:.2f} | {mb:.1f} |"
+            )
 
 
 if __name__ == "__main__":

@@ -35,6 +35,11 @@ class TeamMaps:
     Attributes:
         robot_map: ``(n,)`` the map each robot sees.
         team_map: The map that integrates every robot's scans (the team's coverage).
+
+    With ``comm``, while every robot shares one map that map holds all the team knows (each
+    merge brought in all a robot had seen, and every scan since went into it), so the team map
+    takes no scans then and :attr:`coverage_map` is the shared one; the team map is brought up
+    to date (a copy) when the team splits again. The same cells, one map update a scan fewer.
     """
 
     def __init__(self, n: int, sharing: str) -> None:
@@ -52,12 +57,23 @@ class TeamMaps:
         """Maps the batch holds: one shared, or one per robot and the team map."""
         return 1 if self.sharing == "shared" else self.n + 1
 
+    @property
+    def together(self) -> bool:
+        """Whether every robot sees one map (always with ``shared``)."""
+        return bool((self.robot_map == self.robot_map[0]).all())
+
+    @property
+    def coverage_map(self) -> int:
+        """The map that holds all the team knows: the team map, or the one all robots share."""
+        return int(self.robot_map[0]) if self.sharing != "own" and self.together else self.team_map
+
     def map_scans(self) -> list[list[int]]:
         """For each map, the robots whose scans it integrates, in order (the batch's ``map_scans``)."""
         if self.sharing == "shared":
             return [list(range(self.n))]
         own = [[int(i) for i in np.flatnonzero(self.robot_map == m)] for m in range(self.n)]
-        return [*own, list(range(self.n))]
+        team = [] if self.sharing == "comm" and self.together else list(range(self.n))
+        return [*own, team]
 
     def reset(self) -> None:
         """Back to the start's layout (with ``comm``: each robot its own map again)."""
@@ -85,6 +101,8 @@ class TeamMaps:
         if np.array_equal(grouped, components[:, None] == components[None, :]):
             return 0  # the links join the robots as their maps do: nothing to split or merge
         before = self.robot_map.copy()
+        if self.together:
+            batch.copy_map(self.team_map, int(self.robot_map[0]))  # the team map takes scans again
         self._split(batch, components)
         sent = self._merge(batch, components)
         if not np.array_equal(before, self.robot_map):

@@ -181,7 +181,7 @@ class TeamParallelEnv(ParallelEnv):
         g = self.config.global_map
         image = np.zeros(self.state_space.shape, dtype=np.uint8)
         up = float(sim.starts[0, 2])
-        sim.batch.global_view(sim.maps.team_map, sim.base_xy, up, g.resolution_m, image[0], image[1])
+        sim.batch.global_view(sim.maps.coverage_map, sim.base_xy, up, g.resolution_m, image[0], image[1])
         image[2][(image[0] == 0) & (image[1] == 0)] = 255
         mark_points(image[3], sim.poses[:, :2], sim.base_xy, up, g.resolution_m)
         return image
@@ -200,7 +200,7 @@ class TeamParallelEnv(ParallelEnv):
             raise gym.error.ResetNeeded("call reset() before render()")
         offsets = beam_offsets(self.config.lidar)
         returned = sim.returned_beams(offsets)
-        team_grid = sim.batch.grids[sim.maps.team_map]
+        team_grid = sim.batch.grids[sim.maps.coverage_map]
         victims = (None, None) if sim.victims is None else (sim.victims.xy, sim.victims.found)
         scenes = [
             Scene(
@@ -280,7 +280,7 @@ class TeamParallelEnv(ParallelEnv):
         cell_m2 = sim.batch.building_meta[0, 2] ** 2
         team = {
             "coverage": sim.coverage,
-            "observed_area_m2": float(sim.batch.observed[sim.maps.team_map] * cell_m2),
+            "observed_area_m2": float(sim.batch.observed[sim.maps.coverage_map] * cell_m2),
             "messages": sim.messages,
             "map_cells_sent": sim.cells_sent,
         }

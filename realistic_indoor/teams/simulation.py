@@ -98,7 +98,7 @@ class TeamSimulation:
     def coverage(self) -> float:
         """Share of the reachable floor the team has observed (its team map)."""
         reachable = self.batch.building_meta[0, 3]
-        return float(self.batch.observed[self.maps.team_map] / reachable) if reachable > 0 else 1.0
+        return float(self.batch.observed[self.maps.coverage_map] / reachable) if reachable > 0 else 1.0
 
     def own_coverage(self, i: int) -> float:
         """Share of the reachable floor robot ``i``'s map holds."""

@@ -137,6 +137,20 @@ def test_comm_sharing__merges_maps_while_linked_and_not_without_links():
     assert obs_l["robot_0"]["base"][:2].all() and not obs_a["robot_0"]["base"][:2].any()
 
 
+def test_comm_sharing__the_team_covers_what_every_scan_saw_as_links_come_and_go():
+    """Short links split the team and join it again; its coverage stays that of all scans ('own')."""
+    links = teams.RangeLinks(range_m=2.0)
+    comm = make("OfficeExplore-v0", 4, comm=links, map_sharing="comm")
+    own = make("OfficeExplore-v0", 4, comm=links, map_sharing="own")
+    groups = set()
+    for (_, info_c), (_, info_o) in side_by_side(comm, own, seed=7, steps=150):
+        assert info_c["robot_0"]["coverage"] == info_o["robot_0"]["coverage"]
+        groups.add(len(set(comm.simulation.maps.robot_map.tolist())))
+    assert 1 in groups and max(groups) > 1  # together, and apart
+    for agent in info_c:
+        assert info_c[agent]["own_coverage"] >= info_o[agent]["own_coverage"]  # merged maps know more
+
+
 @pytest.mark.parametrize(("comm", "reported"), [("unlimited", 1), ("none", 0)])
 def test_search__ends_when_every_victim_is_found_and_counts_the_findings_that_reach_the_base(comm, reported):
     """A victim in the corridor, 2 m ahead of the entrance: found at the start, so the first step ends."""

@@ -100,26 +100,35 @@ def _sections(f: _Frame) -> list[tuple[int, int]]:
     return subtract_intervals(*f.run, list(f.crossings))
 
 
-def _courts(s: Section, f: _Frame) -> dict[int, list[Rect]]:
-    out: dict[int, list[Rect]] = {}
+def _core_sections(s: Section, f: _Frame, picks: list[tuple[int, int]]) -> list[tuple[int, Rect]]:
+    """The full-depth rectangle of each picked ``(core, section)``, with the pick's index.
+
+    A pick past the block's last section (a block shorter than its section was drawn for) is
+    left out.
+    """
     stretches = _sections(f)
-    for j, i in s.courts:
+    out = []
+    for k, (j, i) in enumerate(picks):
         if i < len(stretches):
             y0, y1 = f.core(j, s.corridor)
             a, b = stretches[i]
-            out.setdefault(j, []).append((a, y0, b, y1))
+            out.append((k, (a, y0, b, y1)))
+    return out
+
+
+def _courts(s: Section, f: _Frame) -> dict[int, list[Rect]]:
+    out: dict[int, list[Rect]] = {}
+    for k, rect in _core_sections(s, f, list(s.courts)):
+        out.setdefault(s.courts[k][0], []).append(rect)
     return out
 
 
 def _deep(s: Section, f: _Frame) -> dict[int, list[Bay]]:
     """The deep strips of each core: one bay across the core's depth per deep section."""
     out: dict[int, list[Bay]] = {}
-    stretches = _sections(f)
-    for j, i, side in s.deep:
-        if i < len(stretches):
-            y0, y1 = f.core(j, s.corridor)
-            a, b = stretches[i]
-            out.setdefault(j, []).append(Bay((a, y0, b, y1), "x", side))
+    for k, rect in _core_sections(s, f, [(j, i) for j, i, _ in s.deep]):
+        j, _, side = s.deep[k]
+        out.setdefault(j, []).append(Bay(rect, "x", side))
     return out
 
 

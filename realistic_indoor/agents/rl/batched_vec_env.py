@@ -12,19 +12,20 @@ sub-environment's ``info`` also holds what the single environment's does (``cove
 
 from __future__ import annotations
 
-import time
 import warnings
 from collections.abc import Sequence
 from typing import Any
 
 import gymnasium as gym
 import numpy as np
-from stable_baselines3.common.vec_env.base_vec_env import VecEnv, VecEnvIndices, VecEnvStepReturn
+from stable_baselines3.common.vec_env.base_vec_env import VecEnvStepReturn
+
+from realistic_indoor.agents.rl.shared_vec_env import SharedStateVecEnv
 
 __all__ = ["BatchedVecEnv"]
 
 
-class BatchedVecEnv(VecEnv):
+class BatchedVecEnv(SharedStateVecEnv):
     """Several native vector environments (e.g. one per registered id) as one SB3 ``VecEnv``.
 
     Observations are filtered to ``keys``. By default sub-environments are numbered group after
@@ -68,9 +69,7 @@ class BatchedVecEnv(VecEnv):
         self.render_mode = None
         super().__init__(n, obs_space, first.single_action_space)
         self._actions: np.ndarray | None = None
-        self._returns = np.zeros(self.num_envs)
-        self._lengths = np.zeros(self.num_envs, dtype=np.int64)
-        self._starts = np.full(self.num_envs, time.perf_counter())
+        self._clear_episodes()
 
     def reset(self) -> dict[str, np.ndarray]:
         """Start an episode in every sub-environment (seeded by :meth:`seed` if it was called)."""
@@ -82,9 +81,7 @@ class BatchedVecEnv(VecEnv):
             obs, _ = g.reset(seed=None if all(s is None for s in seeds) else list(seeds))
             parts.append(obs)
         self._reset_seeds()
-        self._returns[:] = 0.0
-        self._lengths[:] = 0
-        self._starts[:] = time.perf_counter()
+        self._clear_episodes()
         return self._join(parts)
 
     def step_async(self, actions: np.ndarray) -> None:
@@ -124,23 +121,14 @@ class BatchedVecEnv(VecEnv):
     ) -> list[dict[str, Any]]:
         """Per sub-environment ``info`` dicts of one group (Monitor's ``episode`` at an end)."""
         n = len(reward)
-        self._returns[lo : lo + n] += reward
-        self._lengths[lo : lo + n] += 1
+        self._count_step(lo, reward)
         out = _env_infos(info, n)  # what the single env's info holds
         ended = terminated | truncated
         limited = (truncated & ~terminated).tolist()
-        now = time.perf_counter()
         for k, item in enumerate(out):
             item["TimeLimit.truncated"] = limited[k]
         for k in np.flatnonzero(ended):
-            i = lo + int(k)
-            out[k]["episode"] = {
-                "r": round(float(self._returns[i]), 6),  # as SB3's Monitor rounds it
-                "l": int(self._lengths[i]),
-                "t": round(now - self._starts[i], 6),
-                "coverage": out[k]["coverage"],  # Monitor(info_keywords=("coverage",)) adds it
-            }
-            self._returns[i], self._lengths[i], self._starts[i] = 0.0, 0, now
+            out[k]["episode"] = self._episode(lo + int(k), out[k]["coverage"])
         return out
 
     def _join(self, parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
@@ -192,26 +180,10 @@ class BatchedVecEnv(VecEnv):
             return None
         return super().render(mode)
 
-    def get_attr(self, attr_name: str, indices: VecEnvIndices = None) -> list[Any]:
-        """The attribute of each sub-environment's group (``render_mode``, say)."""
-        return [getattr(self._group_of(int(self._order[i])), attr_name) for i in self._get_indices(indices)]
-
-    def set_attr(self, attr_name: str, value: Any, indices: VecEnvIndices = None) -> None:
-        """Not supported: sub-environments share their group's state."""
-        raise NotImplementedError("BatchedVecEnv sub-environments have no attributes of their own")
-
-    def env_method(
-        self, method_name: str, *args: Any, indices: VecEnvIndices = None, **kwargs: Any
-    ) -> list[Any]:
-        """Not supported: sub-environments share their group's state."""
-        raise NotImplementedError("BatchedVecEnv sub-environments have no methods of their own")
-
-    def env_is_wrapped(self, wrapper_class: type[gym.Wrapper], indices: VecEnvIndices = None) -> list[bool]:
-        """``False`` for every sub-environment (no Gymnasium wrappers; ``episode`` is built in)."""
-        return [False for _ in self._get_indices(indices)]
-
-    def _group_of(self, i: int) -> Any:
-        return self.groups[int(np.searchsorted(self._bounds, i, side="right")) - 1]
+    def _owner_of(self, i: int) -> Any:
+        """The native vector environment that sub-environment ``i`` belongs to."""
+        j = int(self._order[i])
+        return self.groups[int(np.searchsorted(self._bounds, j, side="right")) - 1]
 
 
 def _env_infos(info: dict[str, Any], n: int) -> list[dict[str, Any]]:

@@ -44,6 +44,7 @@ __all__ = [
     "StructureAgent",
     "UtilityFrontierAgent",
     "WallFollower",
+    "agent_observations",
     "make_agent",
 ]
 
@@ -105,6 +106,27 @@ def make_agent(name: str, env: Any, **options: Any) -> Agent:
     spec = env if isinstance(env, RobotSpec) else RobotSpec.from_env(env)
     module, cls = AGENTS[key].split(":")
     return getattr(importlib.import_module(module), cls)(spec, **options)
+
+
+def agent_observations(name: str) -> tuple[str, ...]:
+    """The environments' extra observations (``EnvConfig.extra_observations``) the agent reads.
+
+    A PPO model (``"ppo:<path>"``) trained with ``global_map`` or ``time_left`` in its view
+    needs its environment to compute them; every other agent reads the standard observation
+    (the learned explorer computes its candidates on its own side). Evaluation asks this before
+    it makes an agent's environment.
+
+    Raises:
+        ConfigError: If a PPO model cannot be loaded.
+    """
+    key, _, argument = str(name).strip().partition(":")
+    if key.lower() != "ppo" or not argument.strip():
+        return ()
+    from realistic_indoor.agents.rl.agent import load_model
+    from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS
+
+    reads = load_model(argument).observation_space.spaces
+    return tuple(k for k in EXTRA_OBSERVATIONS if k in reads)
 
 
 def __getattr__(name: str) -> Any:

@@ -30,6 +30,8 @@ presets (measured on 2 CPU cores):
            step limits (140 CPU-seconds: 2 to 6 minutes)
   long     3,000,000 steps on bigger buildings (hours), then 10 episodes per agent and id
            (5 times the default's evaluation)
+  global-map  the default, with the robot's whole map (global_map) and the share of the step
+           limit left (time_left) in the policy's view; its environments run in sub-processes
   learned  the learned explorer on offices, schools and houses at their default sizes and
            step limits: 20,000 decisions of cloning, then 40,000 of MaskablePPO (--timesteps
            sets these), then 2 episodes per agent and id
@@ -46,6 +48,7 @@ examples:
   realistic-indoor train --preset smoke
   realistic-indoor train --preset learned
   realistic-indoor train --envs realistic
+  realistic-indoor train --preset global-map
   realistic-indoor train --envs random --out runs/ppo_random.zip --eval-envs RandomExplore-v0,OfficeExplore-v0
   realistic-indoor train --no-train --out runs/ppo_realistic_default.zip --eval-episodes 10"""
 
@@ -54,7 +57,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     """Add the ``train`` subcommand."""
     p = sub.add_parser(
         "train",
-        help="train a PPO explorer (presets smoke, default, long), then evaluate it",
+        help="train a PPO explorer (presets smoke, default, long, global-map) or the learned explorer, then evaluate it",
         description=_DESCRIPTION,
         epilog=_EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,

@@ -118,9 +118,9 @@ def run_episode(task: EpisodeTask) -> EpisodeResult:
         ConfigError: For an unknown agent or a bad environment argument.
         PlanFormatError: If the environment's plan cannot be read.
     """
-    from realistic_indoor.agents import make_agent
+    from realistic_indoor.agents import agent_observations, make_agent
 
-    env = make_env(task.env)
+    env = make_env(task.env, agent_observations(task.agent))
     try:
         agent = make_agent(task.agent, env)
         obs, info = env.reset(seed=task.seed)

@@ -81,15 +81,18 @@ def check_tasks(tasks: Sequence[EpisodeTask]) -> None:
         ConfigError: For an unknown agent, id, or bad environment argument.
         PlanFormatError: For a plan that cannot be read.
     """
-    from realistic_indoor.agents import make_agent
+    from realistic_indoor.agents import agent_observations, make_agent
 
     envs = {t.env.label: t.env for t in tasks}
-    agents = {t.agent: None for t in tasks}
+    by_extras: dict[tuple[str, ...], list[str]] = {}  # agents grouped by the observations they add
+    for agent in dict.fromkeys(t.agent for t in tasks):
+        by_extras.setdefault(agent_observations(agent), []).append(agent)
     for spec in envs.values():
-        env = make_env(spec)
-        for agent in agents:
-            make_agent(agent, env)
-        env.close()
+        for extras, agents in by_extras.items():
+            env = make_env(spec, extras)
+            for agent in agents:
+                make_agent(agent, env)
+            env.close()
 
 
 def _run(task: EpisodeTask) -> EpisodeResult:

@@ -195,8 +195,13 @@ def task_key(task: EpisodeTask) -> tuple[str, str, int]:
     return task.agent, task.env.label, task.seed
 
 
-def make_env(spec: EnvSpec) -> Any:
+def make_env(spec: EnvSpec, extra_observations: tuple[str, ...] = ()) -> Any:
     """``gym.make`` of an environment spec; a plan is loaded once per process and reused.
+
+    Args:
+        spec: The environment.
+        extra_observations: Extra observations an agent reads
+            (:func:`~realistic_indoor.agents.agent_observations`), added to the spec's own.
 
     Raises:
         PlanFormatError: If the plan cannot be read.
@@ -207,6 +212,9 @@ def make_env(spec: EnvSpec) -> Any:
     import realistic_indoor.envs  # noqa: F401 - registers the ids
 
     kwargs = dict(spec.kwargs)
+    if extra_observations:
+        asked = tuple(kwargs.get("extra_observations") or ())
+        kwargs["extra_observations"] = tuple(dict.fromkeys(asked + tuple(extra_observations)))
     if "max_steps" in kwargs:
         kwargs.setdefault("max_episode_steps", kwargs["max_steps"])
     if spec.plan is not None:

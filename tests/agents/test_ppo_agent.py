@@ -83,3 +83,60 @@ def test_ppo_config__rejects_bad_values():
         ppo_preset("huge")
     with pytest.raises(ConfigError, match="n_envs"):
         ppo_preset("default", n_envs=0)
+
+
+@pytest.fixture(scope="module")
+def global_map_model(tmp_path_factory):
+    """A smoke-trained model whose policy reads the robot's whole map and the time left."""
+    from realistic_indoor.agents.rl import train_ppo
+
+    path = tmp_path_factory.mktemp("ppo_global") / "global.zip"
+    keys = ppo_preset("global-map").obs_keys
+    config = ppo_preset("smoke", env_ids=("HouseExplore-v0",), obs_keys=keys)
+    train_ppo(config, path, log=lambda line: None)
+    return path
+
+
+def test_global_map_preset__the_policy_reads_the_whole_map_and_the_time_left(global_map_model):
+    from realistic_indoor.agents.rl.agent import load_model
+
+    spaces = load_model(global_map_model).observation_space.spaces
+    assert list(spaces) == sorted(["scan", "local_map", "velocity", "global_map", "time_left"])
+    assert spaces["global_map"].shape == (4, 128, 128)  # GlobalMapConfig's default
+
+
+def test_evaluation_gives_a_global_map_model_its_observations(global_map_model):
+    from realistic_indoor.agents import agent_observations
+    from realistic_indoor.evaluation import evaluate
+
+    assert agent_observations(f"ppo:{global_map_model}") == ("global_map", "time_left")
+    assert agent_observations("frontier") == () and agent_observations("learned") == ()
+    results = evaluate(
+        [f"ppo:{global_map_model}"],
+        ["HouseExplore-v0"],
+        episodes=1,
+        env_kwargs={"max_steps": 15},
+        progress=False,
+        workers=1,
+    )
+    assert [r.steps for r in results] == [15]
+
+
+def test_ppo_config__candidates_need_the_learned_recipe():
+    with pytest.raises(ConfigError, match="'candidates' needs macro actions") as err:
+        PPOConfig(obs_keys=("scan", "candidates"))
+    assert "\n" not in str(err.value)
+
+
+def test_extra_observations_train_in_sub_processes_where_the_native_vector_env_cannot():
+    from stable_baselines3.common.vec_env import SubprocVecEnv
+
+    from realistic_indoor.agents.rl.envs import make_vec_env
+
+    venv = make_vec_env(ppo_preset("global-map", n_envs=2, env_ids=("HouseExplore-v0",)))
+    try:
+        assert isinstance(venv, SubprocVecEnv)  # asked for "batched", the default
+        assert venv.observation_space["time_left"].shape == (1,)
+        assert venv.reset()["global_map"].shape == (2, 4, 128, 128)
+    finally:
+        venv.close()

@@ -47,9 +47,15 @@ class PPOConfig:
             of the chosen action.
         obs_keys: Observation keys the policy reads (``pose`` is left out by default: absolute
             odometry does not generalise across buildings); ``victims`` is added for search ids.
+            ``global_map`` and ``time_left`` are the environments' extra observations
+            (``EnvConfig.extra_observations``): naming one asks the environments for it, and
+            evaluation gives a model that reads them the same (the ``global-map`` preset).
+            ``candidates`` needs macro actions: the learned explorer's recipe
+            (:mod:`~realistic_indoor.agents.rl.learned`).
         n_envs: Environments run in parallel.
         vec_env: ``"batched"`` (the default: the ids' native vector environments, all
-            sub-environments of an id stepped by one compiled call, in this process),
+            sub-environments of an id stepped by one compiled call, in this process; with
+            extra observations, which those do not compute, ``"subproc"`` instead),
             ``"subproc"`` (one process each) or ``"dummy"`` (all in this process, in turn).
             All three step the same episodes for one seed, so training is the same; the first
             51,200 steps of the default preset took 66.8 s batched, 68.3 s subproc and 63.1 s
@@ -97,6 +103,11 @@ class PPOConfig:
             raise ConfigError(
                 f"PPOConfig.action_type must be discrete or continuous, got {self.action_type!r}"
             )
+        if "candidates" in self.obs_keys:
+            raise ConfigError(
+                "PPOConfig.obs_keys: 'candidates' needs macro actions; train the learned explorer "
+                "(realistic-indoor train --preset learned) to choose among candidates"
+            )
         if self.vec_env not in VEC_ENVS:
             raise ConfigError(f"PPOConfig.vec_env must be one of {', '.join(VEC_ENVS)}, got {self.vec_env!r}")
         for name in (
@@ -139,6 +150,7 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
         "n_steps": 1024,
         "n_epochs": 10,
     },
+    "global-map": {"obs_keys": ("scan", "local_map", "velocity", "global_map", "time_left")},
     "smoke": {
         "total_timesteps": 256,
         "n_envs": 2,
@@ -150,8 +162,10 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
     },
 }
 """Named overrides of :class:`PPOConfig`: ``default`` (about 20 minutes on 2 CPU cores),
-``long`` (3 M steps on bigger buildings: hours; better explorers), ``smoke`` (256 steps: checks
-the set-up in seconds, and the tests use it)."""
+``long`` (3 M steps on bigger buildings: hours; better explorers), ``global-map`` (the default
+run with the robot's whole map, ``global_map``, and the share of the step limit left,
+``time_left``, in the policy's view: primitive-action PPO with what the learned explorer's
+navigator knows), ``smoke`` (256 steps: checks the set-up in seconds, and the tests use it)."""
 
 
 def ppo_preset(name: str, **changes: Any) -> PPOConfig:
@@ -210,6 +224,7 @@ class EvalPlan:
 PPO_EVAL_PRESETS: dict[str, EvalPlan] = {
     "default": EvalPlan(episodes=2),
     "long": EvalPlan(episodes=10),
+    "global-map": EvalPlan(episodes=2),
     "smoke": EvalPlan(episodes=1, max_steps=50, areas_m2=TRAINING_AREAS_M2),
     "learned": EvalPlan(episodes=2, baselines=("frontier", "utility", "structure")),
     "learned-smoke": EvalPlan(

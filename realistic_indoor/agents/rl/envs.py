@@ -19,6 +19,7 @@ class EnvFactory:
 
     def __init__(self, env_id: str, config: PPOConfig) -> None:
         from realistic_indoor.envs import PRESETS
+        from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS
 
         self.env_id = env_id
         building_type = PRESETS[env_id].building_type
@@ -27,7 +28,11 @@ class EnvFactory:
             self.kwargs["area_m2"] = config.areas_m2[building_type]
         self.kwargs["action_type"] = config.action_type
         self.keys = tuple(config.obs_keys) + (("victims",) if "Search" in env_id else ())
-        self.batched = PRESETS[env_id].vector_entry_point is not None
+        extras = tuple(k for k in EXTRA_OBSERVATIONS if k in self.keys)
+        if extras:
+            self.kwargs["extra_observations"] = extras
+        # the native vector environments compute no extra observations
+        self.batched = PRESETS[env_id].vector_entry_point is not None and not extras
 
     def __call__(self) -> Any:
         """A new environment: the id with the training settings, filtered keys, a Monitor."""
@@ -53,14 +58,16 @@ def make_vec_env(config: PPOConfig) -> Any:
     process) behind :class:`~realistic_indoor.agents.rl.batched_vec_env.BatchedVecEnv`, the ids
     taking the ``n_envs`` sub-environments in turn, numbered as the other two number them: with
     one seed all three step the same episodes. Otherwise one Gymnasium environment per
-    sub-environment, in sub-processes (``"subproc"``) or in this process (``"dummy"``).
+    sub-environment, in sub-processes (``"subproc"``, and ``"batched"`` where the native vector
+    environments cannot run the training's environments: extra observations) or in this process
+    (``"dummy"``).
     """
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
     factories = env_factories(config)
     if config.vec_env == "batched" and all(f.batched for f in factories):
         venv = _batched(factories)
-    elif config.vec_env == "subproc" and config.n_envs > 1:
+    elif config.vec_env in ("subproc", "batched") and config.n_envs > 1:
         venv = SubprocVecEnv(factories, start_method="fork")
     else:
         venv = DummyVecEnv(factories)

@@ -215,6 +215,14 @@ class Navigator:
         self._mode = "drive"
         self.reflexes.reset()
 
+    def use_map(self, own_map: OwnMap) -> None:
+        """Map onto ``own_map`` from now on: a map shared with teammates, in the same frame.
+
+        The plan, blacklist and victims stay; the next :meth:`sense` integrates into it.
+        """
+        self.map = own_map
+        self.reflexes.map = own_map
+
     # -- one step ----------------------------------------------------------------------------------------
     def step(
         self,

@@ -181,6 +181,40 @@ class OwnMap:
         rows, cols = self._cells(pts)
         self.state[rows, cols] = MAPPED_OCCUPIED
 
+    # -- sharing -------------------------------------------------------------------------------------
+    def copy(self) -> OwnMap:
+        """An independent copy (a robot leaving a group keeps what the group knew)."""
+        out = object.__new__(OwnMap)
+        out.__dict__.update(self.__dict__)
+        out.state = self.state.copy()
+        out.searched = None if self.searched is None else self.searched.copy()
+        return out
+
+    def merge(self, other: OwnMap) -> int:
+        """Add what ``other`` knows and this map does not; return the cells gained.
+
+        Both maps must share a frame and a resolution (a team's maps in the team's frame):
+        their grids then differ by whole cells. A cell unknown here takes ``other``'s state;
+        the floor ``other``'s victim sensor swept counts as swept here too.
+        """
+        res = self.resolution_m
+        dr = round((other.origin[1] - self.origin[1]) / res)
+        dc = round((other.origin[0] - self.origin[0]) / res)
+        k = other.known
+        shift = self._ensure(Box(k.r0 + dr, k.r1 + dr, k.c0 + dc, k.c1 + dc))
+        dr, dc = dr + shift[0], dc + shift[1]
+        mine = self.state[k.r0 + dr : k.r1 + dr, k.c0 + dc : k.c1 + dc]
+        theirs = other.state[k.slices]
+        gained = (mine == MAPPED_UNKNOWN) & (theirs != MAPPED_UNKNOWN)
+        mine[gained] = theirs[gained]
+        if self.searched is not None and other.searched is not None:
+            self.searched[k.r0 + dr : k.r1 + dr, k.c0 + dc : k.c1 + dc] |= other.searched[k.slices]
+        own = self.known
+        self.known = Box(
+            min(own.r0, k.r0 + dr), max(own.r1, k.r1 + dr), min(own.c0, k.c0 + dc), max(own.c1, k.c1 + dc)
+        )
+        return int(np.count_nonzero(gained))
+
     # -- internals -----------------------------------------------------------------------------------
     def _window_box(self, pose: tuple[float, float, float], half: int) -> Box:
         r, c = self.to_cell(pose[0], pose[1])

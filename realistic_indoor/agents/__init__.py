@@ -89,6 +89,13 @@ def make_agent(name: str, env: Any, **options: Any) -> Agent:
     if colon and not argument.strip():
         raise ConfigError(f"agent {name!r}: nothing after ':'; give a model file ({key}:<path/to/model.zip>)")
     if key not in AGENTS:
+        from realistic_indoor.agents.team import TEAM_AGENTS
+
+        if key in TEAM_AGENTS:
+            raise ConfigError(
+                f"{key!r} is a team agent: run it on a team environment (evaluate --robots N, "
+                "agents.team.make_team_agent)"
+            )
         raise ConfigError(f"unknown agent {name!r}; valid: {', '.join(AGENTS)} (ppo as ppo:<model.zip>)")
     if key == "ppo":
         if not argument and "model" not in options:

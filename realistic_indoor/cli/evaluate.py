@@ -18,6 +18,7 @@ _TABLE_METRICS = (
     "collisions",
 )
 _SEARCH_METRICS = ("victims_found_share", "time_to_all_victims_s")
+_TEAM_METRICS = ("messages", "linked_to_base_share")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -75,6 +76,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="stop at the first plan that cannot be read or has no rooms, or that the floor-plan reader "
         "would have to repair (default: leave it out with a warning)",
     )
+    p.add_argument(
+        "--robots",
+        default=None,
+        metavar="N,N,...",
+        help="team sizes, e.g. 1,2,4,8: every agent (a team agent: frontier, coordinated, hungarian) runs "
+        "as a team of each size in the id's team environment (wss links, maps merged while linked); the "
+        "summary adds speed-up and efficiency against one robot, and speedup.png",
+    )
     p.add_argument("--max-steps", type=int, default=None, help="override every environment's step limit")
     p.add_argument(
         "--env-kwargs",
@@ -89,7 +98,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the evaluation, write the outputs, print the summary."""
-    from realistic_indoor.evaluation import format_table, run_evaluation, summarize
+    from realistic_indoor.evaluation import format_table, run_evaluation, summarize, summary_rows
     from realistic_indoor.validator.plan_sets import show_progress, skipped_summary
 
     agents = [a.strip() for a in args.agents.split(",") if a.strip()]
@@ -97,6 +106,7 @@ def run(args: argparse.Namespace) -> int:
     for option, names in (("--agents", agents), ("--envs", envs)):
         if not names:
             raise ConfigError(f"{option} names nothing; give one or more names, comma-separated")
+    robots = _robots(args.robots)
     kwargs = _env_kwargs(args.env_kwargs)
     if args.max_steps is not None:
         kwargs["max_steps"] = args.max_steps
@@ -116,6 +126,7 @@ def run(args: argparse.Namespace) -> int:
             env_kwargs=kwargs,
             strict=args.strict,
             resume=args.resume,
+            robots=robots,
         )
     except KeyboardInterrupt:
         log = Path(args.out) / "episodes.jsonl"
@@ -127,7 +138,11 @@ def run(args: argparse.Namespace) -> int:
         raise
     results = evaluation.results
     searching = any(r.victims_total for r in results)
-    print(format_table(summarize(results), _TABLE_METRICS + (_SEARCH_METRICS if searching else ())))
+    metrics = _TABLE_METRICS + (_SEARCH_METRICS if searching else ())
+    if robots is None:
+        print(format_table(summarize(results), metrics))
+    else:
+        print(format_table(summary_rows(results), metrics + _TEAM_METRICS))
     figures = "" if args.no_figures else ", figures"
     print(f"results in {args.out}/ (episodes.jsonl, episodes.csv, summary.csv, results.json{figures})")
     if evaluation.resumed:
@@ -166,3 +181,21 @@ def _env_kwargs(text: str | None) -> dict:
     if not isinstance(value, dict):
         raise ConfigError(f"--env-kwargs must be a JSON object of gym.make arguments, got {text!r}")
     return value
+
+
+def _robots(text: str | None) -> list[int] | None:
+    """``--robots``: team sizes, checked (integers from 1 to teams.MAX_ROBOTS, no repeat)."""
+    if text is None:
+        return None
+    from realistic_indoor.evaluation.tasks import check_robots
+
+    tokens = [t.strip() for t in text.split(",") if t.strip()]
+    sizes = []
+    for token in tokens:
+        try:
+            sizes.append(int(token))
+        except ValueError:
+            raise ConfigError(
+                f"--robots takes team sizes (integers), comma-separated, got {token!r}"
+            ) from None
+    return check_robots(sizes)

@@ -30,6 +30,7 @@ from realistic_indoor.evaluation.outputs import (
     format_table,
     previous_results,
     read_results,
+    summary_rows,
     write_results,
 )
 from realistic_indoor.evaluation.runner import check_tasks, run_tasks
@@ -97,6 +98,7 @@ def evaluate(
     *,
     strict: bool = False,
     resume: bool = False,
+    robots: Sequence[int] | None = None,
 ) -> list[EpisodeResult]:
     """Run every agent in every environment for ``episodes`` seeds; optionally write the outputs.
 
@@ -116,6 +118,7 @@ def evaluate(
         env_kwargs,
         strict=strict,
         resume=resume,
+        robots=robots,
     ).results
 
 
@@ -134,6 +137,7 @@ def run_evaluation(
     *,
     strict: bool = False,
     resume: bool = False,
+    robots: Sequence[int] | None = None,
 ) -> Evaluation:
     """Run every agent in every environment for ``episodes`` seeds; optionally write the outputs.
 
@@ -159,6 +163,11 @@ def run_evaluation(
         resume: Continue the run whose episode log is in ``out_dir``: the episodes it finished
             (same agent, environment and seed) are taken from it, the others are run, and the
             outputs are written over all of them.
+        robots: Team sizes: every agent (a team agent,
+            :data:`realistic_indoor.agents.team.TEAM_AGENTS`) runs as a team of each size in
+            the id's team environment (default links and map sharing); ``None`` runs each agent
+            alone in the single environment. The summary then adds the team metrics, the
+            speed-up and the efficiency, and ``speedup.png`` is drawn.
 
     Returns:
         The evaluation.
@@ -178,7 +187,7 @@ def run_evaluation(
     specs += parse_envs([e for e in envs if not isinstance(e, EnvSpec)], env_kwargs)
     plans = len({s.plan for s in specs if s.plan is not None})
     specs, skipped = readable_envs(specs, strict)
-    tasks = make_tasks(list(agents), specs, episodes, seed)
+    tasks = make_tasks(list(agents), specs, episodes, seed, robots=robots)
     done = finished_episodes(out_dir, tasks) if resume and out_dir is not None else {}
     todo = [i for i in range(len(tasks)) if i not in done]
     check_tasks([tasks[i] for i in todo])
@@ -192,6 +201,7 @@ def run_evaluation(
             "envs": [s.label for s in specs],
             "episodes": episodes,
             "seed": seed,
+            "robots": None if robots is None else list(robots),
             "skipped": [p.to_dict() for p in skipped],
             "resumed": len(tasks) - len(todo),
         }
@@ -227,7 +237,7 @@ def _write_outputs(
     results: list[EpisodeResult], out: Path, meta: dict[str, Any], figures: bool
 ) -> dict[str, Path]:
     """The CSV, JSON and figures; figures of an earlier run are removed when none are drawn."""
-    from realistic_indoor.evaluation.figures import plot_coverage
+    from realistic_indoor.evaluation.figures import plot_coverage, plot_speedup
 
     files = write_results(results, out, meta)
     for x in ("time", "distance"):
@@ -236,5 +246,10 @@ def _write_outputs(
             files[f"coverage_{x}"] = plot_coverage(results, path, x)
         else:
             path.unlink(missing_ok=True)
+    path = out / "speedup.png"
+    if figures and meta.get("robots"):
+        files["speedup"] = plot_speedup(summary_rows(results), path)
+    else:
+        path.unlink(missing_ok=True)
     files["log"] = out / "episodes.jsonl"
     return files

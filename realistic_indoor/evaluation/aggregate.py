@@ -14,7 +14,9 @@ from realistic_indoor.evaluation.episode import EpisodeResult
 
 __all__ = [
     "SUMMARY_METRICS",
+    "TEAM_METRICS",
     "Estimate",
+    "add_speedup",
     "bootstrap_mean",
     "group_results",
     "mean_curve",
@@ -38,6 +40,9 @@ SUMMARY_METRICS = (
 )
 """Metrics a summary reports. ``reached_target`` is a share (Wilson interval); times and
 distances to the target or to victims average the episodes that got there."""
+
+TEAM_METRICS = ("messages", "linked_to_base_share", "victims_reported")
+"""Metrics a summary of team episodes reports too."""
 
 _RESAMPLES = 2000
 _SEED = 20_240_601  # the bootstrap's own fixed seed: summaries are reproducible byte for byte
@@ -99,7 +104,10 @@ def group_results(
 
 
 def summarize(
-    results: Sequence[EpisodeResult], by: tuple[str, ...] = ("agent", "group"), level: float = 0.95
+    results: Sequence[EpisodeResult],
+    by: tuple[str, ...] = ("agent", "group"),
+    level: float = 0.95,
+    metrics: Sequence[str] = SUMMARY_METRICS,
 ) -> list[dict[str, Any]]:
     """One row per group of results: ``episodes`` and, per metric, ``<m>``, ``<m>_low``, ``<m>_high``.
 
@@ -107,6 +115,8 @@ def summarize(
         results: Episode results.
         by: Fields that define a group (agent and environment group by default).
         level: Confidence level of the intervals.
+        metrics: The metrics (:data:`SUMMARY_METRICS` by default; add :data:`TEAM_METRICS`
+            for teams).
 
     Returns:
         Rows (dicts) in order of first appearance of each group.
@@ -115,10 +125,29 @@ def summarize(
     for key, group in group_results(results, by).items():
         row: dict[str, Any] = dict(zip(by, key, strict=True))
         row["episodes"] = len(group)
-        for metric in SUMMARY_METRICS:
+        for metric in metrics:
             est = _estimate(group, metric, level)
             row[metric], row[f"{metric}_low"], row[f"{metric}_high"] = est.mean, est.low, est.high
         rows.append(row)
+    return rows
+
+
+def add_speedup(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Add ``speedup`` and ``efficiency`` to summary rows grouped by agent, group and ``robots``.
+
+    Speed-up of a team of ``n``: the mean time to the target of the same agent with one robot
+    in the same environment group over the team's mean time (of the episodes that reached it);
+    efficiency: speed-up over ``n``. ``NaN`` without a one-robot row or a time to compare.
+
+    Returns:
+        The same rows, changed in place.
+    """
+    alone = {(r["agent"], r["group"]): r["time_to_target_s"] for r in rows if r["robots"] == 1}
+    for row in rows:
+        one = alone.get((row["agent"], row["group"]), math.nan)
+        team = row["time_to_target_s"]
+        row["speedup"] = one / team if math.isfinite(one) and math.isfinite(team) and team > 0 else math.nan
+        row["efficiency"] = row["speedup"] / row["robots"]
     return rows
 
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from realistic_indoor.evaluation.tasks import EpisodeTask, make_env
 
-__all__ = ["SCALARS", "EpisodeResult", "run_episode"]
+__all__ = ["SCALARS", "TEAM_SCALARS", "EpisodeResult", "run_episode"]
 
 SCALARS = (
     "steps",
@@ -32,6 +32,8 @@ SCALARS = (
     "decisions",
 )
 """The per-episode numbers (``NaN`` where they do not apply), in the order outputs list them."""
+TEAM_SCALARS = ("messages", "linked_to_base_share", "victims_reported")
+"""A team's own per-episode numbers (0 or ``NaN`` for a robot alone), listed after :data:`SCALARS`."""
 
 
 @dataclass
@@ -64,7 +66,14 @@ class EpisodeResult:
         agent_ms_per_step: The agent's thinking time per step (ms, wall clock).
         decisions: Goals the agent chose (the map-based and learned explorers' plans; 0 for
             agents that choose none), so that ``agent_ms_per_step * steps / decisions`` is the
-            time per decision.
+            time per decision. A team's: every robot's.
+        robots: Robots in the team (1 for a robot alone). In a team's episode the coverage,
+            the time to the target and the victims are the team's (what all its robots
+            observed), ``path_length_m`` and ``collisions`` the sums over its robots.
+        messages: Messages the team's robots sent over their links (team total; 0 alone).
+        linked_to_base_share: Share of robot-steps a robot was connected to the base station,
+            directly or through others (``NaN`` for a robot alone).
+        victims_reported: Findings that reached the base station through the links (0 alone).
         coverage_t: Coverage every ``curve_every_steps`` steps, from the start.
         curve_dt_s: Time between entries of ``coverage_t`` (s).
         coverage_d: Coverage every ``curve_every_m`` metres driven, from the start.
@@ -93,6 +102,10 @@ class EpisodeResult:
     victim_times_s: list[float] = field(default_factory=list)
     agent_ms_per_step: float = math.nan
     decisions: int = 0
+    robots: int = 1
+    messages: int = 0
+    linked_to_base_share: float = math.nan
+    victims_reported: int = 0
     coverage_t: list[float] = field(default_factory=list)
     curve_dt_s: float = 0.0
     coverage_d: list[float] = field(default_factory=list)

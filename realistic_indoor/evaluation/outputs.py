@@ -17,8 +17,8 @@ from pathlib import Path
 from typing import IO, Any
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.evaluation.aggregate import summarize
-from realistic_indoor.evaluation.episode import SCALARS, EpisodeResult
+from realistic_indoor.evaluation.aggregate import SUMMARY_METRICS, TEAM_METRICS, add_speedup, summarize
+from realistic_indoor.evaluation.episode import SCALARS, TEAM_SCALARS, EpisodeResult
 from realistic_indoor.evaluation.tasks import EpisodeTask, task_key
 from realistic_indoor.files import atomic_write, write_text
 
@@ -26,16 +26,21 @@ __all__ = [
     "EPISODE_COLUMNS",
     "LOG_NAME",
     "RESULT_FILES",
+    "TEAM_EPISODE_COLUMNS",
     "EpisodeLog",
     "finished_episodes",
     "format_table",
+    "has_teams",
     "previous_results",
     "read_results",
+    "summary_rows",
     "write_results",
 ]
 
 EPISODE_COLUMNS = ("agent", "env", "group", "seed", *SCALARS)
 """Columns of ``episodes.csv``."""
+TEAM_EPISODE_COLUMNS = ("agent", "env", "group", "seed", "robots", *SCALARS, *TEAM_SCALARS)
+"""Columns of ``episodes.csv`` when the results hold teams (:func:`has_teams`)."""
 LOG_NAME = "episodes.jsonl"
 """The episode log in an output folder: one JSON line per finished episode."""
 RESULT_FILES = (
@@ -45,6 +50,7 @@ RESULT_FILES = (
     "results.json",
     "coverage_time.png",
     "coverage_distance.png",
+    "speedup.png",
 )
 """The files an evaluation writes in its output folder."""
 _FORMAT = 1
@@ -66,9 +72,10 @@ def write_results(
         The files written, by name.
     """
     out = Path(out_dir)
-    summary = summarize(results)
+    summary = summary_rows(results)
     files = {"episodes": out / "episodes.csv", "summary": out / "summary.csv", "json": out / "results.json"}
-    _write_csv(files["episodes"], [{c: getattr(r, c) for c in EPISODE_COLUMNS} for r in results])
+    columns = TEAM_EPISODE_COLUMNS if has_teams(results) else EPISODE_COLUMNS
+    _write_csv(files["episodes"], [{c: getattr(r, c) for c in columns} for r in results])
     _write_csv(files["summary"], summary)
     payload = {
         "format": _FORMAT,
@@ -78,6 +85,24 @@ def write_results(
     }
     write_text(files["json"], json.dumps(_plain(payload), indent=1) + "\n")
     return files
+
+
+def has_teams(results: Sequence[EpisodeResult]) -> bool:
+    """Whether any result is a team's (a team agent in a team environment, of any size)."""
+    return any(r.robots > 1 or math.isfinite(r.linked_to_base_share) for r in results)
+
+
+def summary_rows(results: Sequence[EpisodeResult]) -> list[dict[str, Any]]:
+    """``summary.csv``'s rows: per agent and environment group, and team size with teams.
+
+    With teams (:func:`has_teams`) the rows are per agent, group and ``robots``, with the team
+    metrics (:data:`~realistic_indoor.evaluation.aggregate.TEAM_METRICS`), ``speedup`` and
+    ``efficiency`` (:func:`~realistic_indoor.evaluation.aggregate.add_speedup`).
+    """
+    if not has_teams(results):
+        return summarize(results)
+    by = ("agent", "group", "robots")
+    return add_speedup(summarize(results, by, metrics=SUMMARY_METRICS + TEAM_METRICS))
 
 
 def previous_results(out_dir: str | Path) -> list[str]:
@@ -165,7 +190,7 @@ def finished_episodes(out_dir: str | Path, tasks: Sequence[EpisodeTask]) -> dict
         if record is None:
             continue
         old, result = record
-        i = by_key.get((old.get("agent"), old.get("env"), old.get("seed")))
+        i = by_key.get((old.get("agent"), old.get("env"), old.get("seed"), old.get("robots")))
         if i is None:
             continue
         _check_same_settings(old, _task_record(tasks[i]), path, number)
@@ -179,6 +204,7 @@ def _task_record(task: EpisodeTask) -> dict[str, Any]:
         "agent": task.agent,
         "env": task.env.label,
         "seed": task.seed,
+        "robots": task.robots,
         "env_id": task.env.env_id,
         "plan": task.env.plan,
         "kwargs": task.env.kwargs,
@@ -242,11 +268,15 @@ def read_results(path: str | Path) -> tuple[list[EpisodeResult], dict[str, Any]]
 
 def format_table(rows: Sequence[dict[str, Any]], metrics: Sequence[str]) -> str:
     """A plain-text table of summary rows: agent, group, episodes, then ``mean [low, high]`` per metric."""
-    header = ["agent", "env", "n", *metrics]
+    team = any("speedup" in row for row in rows)
+    header = ["agent", "env", *(["robots"] if team else []), "n", *metrics, *(["speedup"] if team else [])]
     lines = [header]
     for row in rows:
-        cells = [str(row["agent"]), str(row["group"]), str(row["episodes"])]
+        cells = [str(row["agent"]), str(row["group"]), *([str(row["robots"])] if team else [])]
+        cells.append(str(row["episodes"]))
         cells += [_interval(row[m], row[f"{m}_low"], row[f"{m}_high"]) for m in metrics]
+        if team:
+            cells.append("-" if not math.isfinite(row["speedup"]) else f"{row['speedup']:.2f}")
         lines.append(cells)
     widths = [max(len(line[i]) for line in lines) for i in range(len(header))]
     return "\n".join("  ".join(cell.ljust(w) for cell, w in zip(line, widths, strict=True)) for line in lines)

@@ -10,7 +10,8 @@ from concurrent.futures import Future, ProcessPoolExecutor, as_completed
 
 from realistic_indoor.errors import ConfigError, RealisticIndoorError
 from realistic_indoor.evaluation.episode import EpisodeResult, run_episode
-from realistic_indoor.evaluation.tasks import EpisodeTask, make_env
+from realistic_indoor.evaluation.tasks import EnvSpec, EpisodeTask, make_env, make_team_env
+from realistic_indoor.evaluation.team_episode import run_team_episode
 
 __all__ = ["check_tasks", "run_tasks"]
 
@@ -84,10 +85,13 @@ def check_tasks(tasks: Sequence[EpisodeTask]) -> None:
     from realistic_indoor.agents import agent_observations, make_agent
 
     envs = {t.env.label: t.env for t in tasks}
+    team_agents = list(dict.fromkeys(t.agent for t in tasks if t.robots is not None))
     by_extras: dict[tuple[str, ...], list[str]] = {}  # agents grouped by the observations they add
-    for agent in dict.fromkeys(t.agent for t in tasks):
+    for agent in dict.fromkeys(t.agent for t in tasks if t.robots is None):
         by_extras.setdefault(agent_observations(agent), []).append(agent)
     for spec in envs.values():
+        if team_agents:
+            _check_team_agents(spec, team_agents)
         for extras, agents in by_extras.items():
             env = make_env(spec, extras)
             for agent in agents:
@@ -95,10 +99,20 @@ def check_tasks(tasks: Sequence[EpisodeTask]) -> None:
             env.close()
 
 
+def _check_team_agents(spec: EnvSpec, agents: list[str]) -> None:
+    """Build the team agents for a team of one in the environment ``spec``."""
+    from realistic_indoor.agents.team import make_team_agent
+
+    env = make_team_env(spec, 1)
+    for agent in agents:
+        make_team_agent(agent, env)
+    env.close()
+
+
 def _run(task: EpisodeTask) -> EpisodeResult:
     """One episode; user errors come back as a picklable ``ConfigError`` naming the episode."""
     try:
-        return run_episode(task)
+        return run_episode(task) if task.robots is None else run_team_episode(task)
     except RealisticIndoorError as e:
         raise ConfigError(f"{task.agent} on {task.env.label}, seed {task.seed}: {e}") from None
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -17,8 +18,10 @@ __all__ = [
     "PLAN_SUFFIXES",
     "EnvSpec",
     "EpisodeTask",
+    "check_robots",
     "make_env",
     "make_tasks",
+    "make_team_env",
     "parse_envs",
     "readable_envs",
     "task_key",
@@ -67,6 +70,9 @@ class EpisodeTask:
         curve_every_steps: Coverage is recorded every this many steps.
         curve_every_m: ... and every this many metres driven.
         target: Coverage whose first crossing is timed (``time_to_target_s``).
+        robots: ``None`` runs the agent alone in the single environment; ``n`` runs a team
+            agent (:func:`realistic_indoor.agents.team.make_team_agent`) with ``n`` robots in
+            the id's team environment (:func:`realistic_indoor.teams.parallel_env`).
     """
 
     agent: str
@@ -75,6 +81,7 @@ class EpisodeTask:
     curve_every_steps: int = 10
     curve_every_m: float = 2.0
     target: float = 0.9
+    robots: int | None = None
 
 
 def parse_envs(tokens: list[str], kwargs: dict[str, Any] | None = None) -> list[EnvSpec]:
@@ -170,14 +177,21 @@ def _usable_plan(path: str, strict: bool) -> Building:
 
 
 def make_tasks(
-    agents: list[str], envs: list[EnvSpec], episodes: int, seed: int = 0, **options: Any
+    agents: list[str],
+    envs: list[EnvSpec],
+    episodes: int,
+    seed: int = 0,
+    robots: Sequence[int] | None = None,
+    **options: Any,
 ) -> list[EpisodeTask]:
     """Every agent in every environment for ``episodes`` seeds (``seed``, ``seed + 1``, ...).
 
-    All agents meet the same seeds, hence the same buildings: comparisons are paired.
+    All agents meet the same seeds, hence the same buildings: comparisons are paired. With
+    ``robots``, every agent runs as a team of each size in turn (the same seeds for each).
 
     Raises:
-        ConfigError: If there is no agent, no environment, or fewer than one episode.
+        ConfigError: If there is no agent, no environment, fewer than one episode, or a team
+            size that is not an integer in [1, :data:`realistic_indoor.teams.MAX_ROBOTS`].
     """
     if not agents or not envs:
         raise ConfigError("an evaluation needs at least one agent and one environment")
@@ -187,12 +201,38 @@ def make_tasks(
         raise ConfigError(
             f"seed must be an integer >= 0 (environments take non-negative seeds), got {seed!r}"
         )
-    return [EpisodeTask(a, e, seed + i, **options) for a in agents for e in envs for i in range(episodes)]
+    sizes: list[int | None] = [None] if robots is None else check_robots(robots)
+    return [
+        EpisodeTask(a, e, seed + i, robots=n, **options)
+        for a in agents
+        for n in sizes
+        for e in envs
+        for i in range(episodes)
+    ]
 
 
-def task_key(task: EpisodeTask) -> tuple[str, str, int]:
-    """What identifies an episode in results: ``(agent, environment label, seed)``."""
-    return task.agent, task.env.label, task.seed
+def check_robots(robots: Sequence[int]) -> list[int]:
+    """Team sizes, checked: distinct integers in [1, :data:`realistic_indoor.teams.MAX_ROBOTS`], in order.
+
+    Raises:
+        ConfigError: For none, a repeat, or a size that is not such an integer.
+    """
+    from realistic_indoor.teams import MAX_ROBOTS
+
+    sizes = list(robots)
+    if not sizes:
+        raise ConfigError("robots names no team size; give one or more, e.g. 1,2,4,8")
+    for n in sizes:
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_ROBOTS:
+            raise ConfigError(f"team sizes must be integers from 1 to {MAX_ROBOTS}, got {n!r}")
+    if len(set(sizes)) < len(sizes):
+        raise ConfigError(f"team sizes repeat: {', '.join(map(str, sizes))}")
+    return sizes
+
+
+def task_key(task: EpisodeTask) -> tuple[str, str, int, int | None]:
+    """What identifies an episode in results: ``(agent, environment label, seed, robots)``."""
+    return task.agent, task.env.label, task.seed, task.robots
 
 
 def make_env(spec: EnvSpec, extra_observations: tuple[str, ...] = ()) -> Any:
@@ -221,6 +261,22 @@ def make_env(spec: EnvSpec, extra_observations: tuple[str, ...] = ()) -> Any:
         # the cache entry readable_envs filled: the plan is read (and its repairs shown) once
         kwargs["building"] = _load_plan(spec.plan, False)
     return gym.make(spec.env_id, **kwargs)
+
+
+def make_team_env(spec: EnvSpec, robots: int) -> Any:
+    """The team environment of ``robots`` robots on an environment spec (default links and map sharing).
+
+    Raises:
+        PlanFormatError: If the plan cannot be read.
+        ConfigError: If a keyword argument is invalid.
+        DependencyNotInstalled: Without PettingZoo (the ``teams`` extra).
+    """
+    from realistic_indoor import teams
+
+    kwargs = dict(spec.kwargs)
+    if spec.plan is not None:
+        kwargs["building"] = _load_plan(spec.plan, False)
+    return teams.parallel_env(spec.env_id, n_robots=robots, **kwargs)
 
 
 @functools.lru_cache(maxsize=64)

@@ -52,7 +52,9 @@ def make_team_agent(name: str, env: Any, **options: Any) -> TeamAgent:
     """
     key = str(name).strip().lower()
     if key not in TEAM_AGENTS:
-        raise ConfigError(f"unknown team agent {name!r}; valid: {', '.join(TEAM_AGENTS)}")
+        raise ConfigError(
+            f"unknown team agent {name!r}; valid: {', '.join(TEAM_AGENTS)} (single-robot agents run without teams)"
+        )
     spec = env if isinstance(env, TeamSpec) else TeamSpec.from_env(env)
     module, cls = TEAM_AGENTS[key].split(":")
     return getattr(importlib.import_module(module), cls)(spec, **options)

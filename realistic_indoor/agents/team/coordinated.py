@@ -100,7 +100,9 @@ class CoordinatedAgent(TeamExplorer):
         near_xy = self._points(robot, ctx, np.array([nearest]))
         best = frontier_utility(near_xy, goals, self._visibility_m)[0] - beta * dist.ravel()[nearest] * res
         bound_m = (1.0 - best) / beta  # no cell farther than this can score better (utility <= 1)
-        dist, parent, _ = dijkstra(ctx.cost, ctx.start, frontiers.mask, False, bound_m / res + 1.0)  # a cell more: rounding
+        dist, parent, _ = dijkstra(
+            ctx.cost, ctx.start, frontiers.mask, False, bound_m / res + 1.0
+        )  # a cell more: rounding
         cells = np.flatnonzero(frontiers.mask.ravel() & np.isfinite(dist.ravel()))
         score = frontier_utility(self._points(robot, ctx, cells), goals, self._visibility_m)
         score -= beta * dist.ravel()[cells] * res

@@ -32,7 +32,7 @@ SCALARS = (
     "decisions",
 )
 """The per-episode numbers (``NaN`` where they do not apply), in the order outputs list them."""
-TEAM_SCALARS = ("messages", "linked_to_base_share", "victims_reported")
+TEAM_SCALARS = ("overlap", "messages", "linked_to_base_share", "victims_reported")
 """A team's own per-episode numbers (0 or ``NaN`` for a robot alone), listed after :data:`SCALARS`."""
 
 
@@ -70,6 +70,8 @@ class EpisodeResult:
         robots: Robots in the team (1 for a robot alone). In a team's episode the coverage,
             the time to the target and the victims are the team's (what all its robots
             observed), ``path_length_m`` and ``collisions`` the sums over its robots.
+        overlap: Share of the floor the team's robots saw with their own lasers that two or
+            more of them saw (:class:`~realistic_indoor.evaluation.overlap.ViewOverlap`; 0 alone).
         messages: Messages the team's robots sent over their links (team total; 0 alone).
         linked_to_base_share: Share of robot-steps a robot was connected to the base station,
             directly or through others (``NaN`` for a robot alone).
@@ -103,6 +105,7 @@ class EpisodeResult:
     agent_ms_per_step: float = math.nan
     decisions: int = 0
     robots: int = 1
+    overlap: float = math.nan
     messages: int = 0
     linked_to_base_share: float = math.nan
     victims_reported: int = 0

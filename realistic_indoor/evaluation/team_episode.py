@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.evaluation.episode import EpisodeResult, _Log
+from realistic_indoor.evaluation.overlap import ViewOverlap
 from realistic_indoor.evaluation.tasks import EpisodeTask, make_team_env
 
 __all__ = ["run_team_episode", "team_info"]
@@ -46,6 +47,7 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
         observations, infos = env.reset(seed=task.seed)
         agent.reset(seed=task.seed)
         log = _Log(team_info(infos))
+        views = _views(env, task.robots)
         thinking, linked = 0.0, []
         while env.agents:
             t0 = time.perf_counter()
@@ -54,6 +56,8 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
             observations, rewards, _, _, infos = env.step(actions)
             log.add(team_info(infos), float(sum(rewards.values())))
             linked.append(np.mean([i["linked_to_base"] for i in infos.values()]))
+            if views is not None:
+                views.add(env.simulation.poses, env.simulation.out.scan)
         config = env.config
     finally:
         env.close()
@@ -64,4 +68,14 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
     result.messages = int(last["messages"])
     result.linked_to_base_share = float(np.mean(linked)) if linked else float("nan")
     result.victims_reported = int(last.get("victims_reported", 0))
+    result.overlap = 0.0 if views is None else views.share()
     return result
+
+
+def _views(env: Any, robots: int) -> ViewOverlap | None:
+    """What each robot's laser sees, from its first scan on (``None`` for a robot alone: no overlap)."""
+    if robots == 1:
+        return None
+    views = ViewOverlap(robots, env.config.lidar)
+    views.add(env.simulation.poses, env.simulation.out.scan)
+    return views

@@ -81,7 +81,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=None,
         metavar="N,N,...",
         help="team sizes, e.g. 1,2,4,8: every agent (a team agent: frontier, coordinated, hungarian) runs "
-        "as a team of each size in the id's team environment (wss links, maps merged while linked); the "
+        "as a team of each size in the id's team environment (wss links, maps merged while linked; "
+        '--env-kwargs \'{"comm": "unlimited"}\' changes them); the '
         "summary adds speed-up and efficiency against one robot, and speedup.png",
     )
     p.add_argument("--max-steps", type=int, default=None, help="override every environment's step limit")

@@ -264,7 +264,10 @@ def make_env(spec: EnvSpec, extra_observations: tuple[str, ...] = ()) -> Any:
 
 
 def make_team_env(spec: EnvSpec, robots: int) -> Any:
-    """The team environment of ``robots`` robots on an environment spec (default links and map sharing).
+    """The team environment of ``robots`` robots on an environment spec.
+
+    The spec's keyword arguments may name the team's ``comm`` and ``map_sharing``
+    (:func:`realistic_indoor.teams.parallel_env`'s; ``"wss"`` and ``"comm"`` by default).
 
     Raises:
         PlanFormatError: If the plan cannot be read.
@@ -276,7 +279,8 @@ def make_team_env(spec: EnvSpec, robots: int) -> Any:
     kwargs = dict(spec.kwargs)
     if spec.plan is not None:
         kwargs["building"] = _load_plan(spec.plan, False)
-    return teams.parallel_env(spec.env_id, n_robots=robots, **kwargs)
+    links = {k: kwargs.pop(k) for k in ("comm", "map_sharing") if k in kwargs}
+    return teams.parallel_env(spec.env_id, n_robots=robots, **links, **kwargs)
 
 
 @functools.lru_cache(maxsize=64)

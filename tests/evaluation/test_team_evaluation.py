@@ -129,3 +129,13 @@ def test_evaluate_cli__bad_team_input_gets_one_line_and_exit_1(agents, robots, m
     err = capsys.readouterr().err.strip()
     assert code == 1
     assert message in err and len(err.splitlines()) == 1 and "Traceback" not in err
+
+
+def test_make_team_env__env_kwargs_name_the_links_and_the_map_sharing():
+    from realistic_indoor.evaluation.tasks import EnvSpec, make_team_env
+    from realistic_indoor.teams import NoLinks
+
+    spec = EnvSpec("OfficeExplore-v0", kwargs={"comm": "none", "map_sharing": "own", "area_m2": 300.0})
+    env = make_team_env(spec, 2)
+    assert isinstance(env.team.links, NoLinks) and env.team.map_sharing == "own"
+    assert env.config.source.area_m2 == 300.0

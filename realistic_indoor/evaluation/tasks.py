@@ -251,15 +251,12 @@ def make_env(spec: EnvSpec, extra_observations: tuple[str, ...] = ()) -> Any:
 
     import realistic_indoor.envs  # noqa: F401 - registers the ids
 
-    kwargs = dict(spec.kwargs)
+    kwargs = _spec_kwargs(spec)
     if extra_observations:
         asked = tuple(kwargs.get("extra_observations") or ())
         kwargs["extra_observations"] = tuple(dict.fromkeys(asked + tuple(extra_observations)))
     if "max_steps" in kwargs:
         kwargs.setdefault("max_episode_steps", kwargs["max_steps"])
-    if spec.plan is not None:
-        # the cache entry readable_envs filled: the plan is read (and its repairs shown) once
-        kwargs["building"] = _load_plan(spec.plan, False)
     return gym.make(spec.env_id, **kwargs)
 
 
@@ -276,11 +273,21 @@ def make_team_env(spec: EnvSpec, robots: int) -> Any:
     """
     from realistic_indoor import teams
 
+    kwargs = _spec_kwargs(spec)
+    links = {k: kwargs.pop(k) for k in ("comm", "map_sharing") if k in kwargs}
+    return teams.parallel_env(spec.env_id, n_robots=robots, **links, **kwargs)
+
+
+def _spec_kwargs(spec: EnvSpec) -> dict[str, Any]:
+    """The spec's keyword arguments (a copy), with its plan as the fixed ``building``.
+
+    The plan comes from the cache entry :func:`readable_envs` filled: it is read (and its repairs
+    shown) once per process.
+    """
     kwargs = dict(spec.kwargs)
     if spec.plan is not None:
         kwargs["building"] = _load_plan(spec.plan, False)
-    links = {k: kwargs.pop(k) for k in ("comm", "map_sharing") if k in kwargs}
-    return teams.parallel_env(spec.env_id, n_robots=robots, **links, **kwargs)
+    return kwargs
 
 
 @functools.lru_cache(maxsize=64)

@@ -47,6 +47,7 @@ __all__ = [
     "MacroActions",
     "MacroConfig",
     "WaypointActions",
+    "candidate_features",
     "rank_candidates",
 ]
 
@@ -202,6 +203,38 @@ def rank_candidates(options: PlanOptions, config: MacroConfig, navigator: Naviga
     return Candidates(goals, victim, xy, np.array(costs, dtype=float), size, area, in_room.astype(bool))
 
 
+def candidate_features(candidates: Candidates | None, pose: tuple[float, float, float], k: int) -> np.ndarray:
+    """The ``candidates`` observation: ``(K * F,)`` float32, ``F = len(CANDIDATE_FEATURES)``.
+
+    Row ``i`` of its ``(K, F)`` reshape describes candidate ``i`` (see
+    :data:`CANDIDATE_FEATURES`); rows past the last candidate are zero; flat, as
+    stable-baselines3's ``MultiInputPolicy`` expects.
+
+    Args:
+        candidates: The decision's candidates (``None``: no decision pending, all zero).
+        pose: The robot's pose in the candidates' frame (m, m, rad).
+        k: Number of rows, K (the action count).
+    """
+    out = np.zeros((k, len(CANDIDATE_FEATURES)), dtype=np.float32)
+    c = candidates
+    if c is None or c.count == 0:
+        return out.ravel()
+    x, y, heading = pose
+    dx, dy = c.xy[:, 0] - x, c.xy[:, 1] - y
+    bearing = np.arctan2(dy, dx) - heading
+    n = c.count
+    out[:n, 0] = 1.0
+    out[:n, 1] = np.minimum(c.cost_m / _LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 2] = np.minimum(np.hypot(dx, dy) / _LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 3] = np.cos(bearing)
+    out[:n, 4] = np.sin(bearing)
+    out[:n, 5] = np.minimum(c.size_m / _LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 6] = np.minimum(c.unobserved_m2 / _AREA_UNIT_M2, _MAX_LENGTH)
+    out[:n, 7] = c.in_room
+    out[:n, 8] = np.array(c.victim, dtype=np.float32)
+    return out.ravel()
+
+
 class MacroActions:
     """Macro actions of one environment: decisions, masks, the navigator (the shared part).
 
@@ -344,29 +377,8 @@ class FrontierActions(MacroActions):
         return candidates, np.arange(self.k) < candidates.count
 
     def features(self) -> np.ndarray:
-        """The ``candidates`` observation: ``(K * F,)`` float32, ``F = len(CANDIDATE_FEATURES)``.
-
-        Row ``i`` of its ``(K, F)`` reshape describes candidate ``i`` (see
-        :data:`CANDIDATE_FEATURES`); flat, as stable-baselines3's ``MultiInputPolicy`` expects.
-        """
-        out = np.zeros((self.k, len(CANDIDATE_FEATURES)), dtype=np.float32)
-        c = self.candidates
-        if c is None or c.count == 0:
-            return out.ravel()
-        x, y, heading = self.navigator.pose
-        dx, dy = c.xy[:, 0] - x, c.xy[:, 1] - y
-        bearing = np.arctan2(dy, dx) - heading
-        n = c.count
-        out[:n, 0] = 1.0
-        out[:n, 1] = np.minimum(c.cost_m / _LENGTH_UNIT_M, _MAX_LENGTH)
-        out[:n, 2] = np.minimum(np.hypot(dx, dy) / _LENGTH_UNIT_M, _MAX_LENGTH)
-        out[:n, 3] = np.cos(bearing)
-        out[:n, 4] = np.sin(bearing)
-        out[:n, 5] = np.minimum(c.size_m / _LENGTH_UNIT_M, _MAX_LENGTH)
-        out[:n, 6] = np.minimum(c.unobserved_m2 / _AREA_UNIT_M2, _MAX_LENGTH)
-        out[:n, 7] = c.in_room
-        out[:n, 8] = np.array(c.victim, dtype=np.float32)
-        return out.ravel()
+        """The ``candidates`` observation of the pending decision (see :func:`candidate_features`)."""
+        return candidate_features(self.candidates, self.navigator.pose, self.k)
 
     def features_space(self) -> spaces.Box:
         """The space of :meth:`features`."""

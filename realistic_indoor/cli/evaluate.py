@@ -18,7 +18,7 @@ _TABLE_METRICS = (
     "collisions",
 )
 _SEARCH_METRICS = ("victims_found_share", "time_to_all_victims_s")
-_TEAM_METRICS = ("overlap", "messages", "linked_to_base_share")
+_TEAM_METRICS = ("overlap", "messages", "linked_to_base_share", "rescue_score")
 
 
 def register(sub: argparse._SubParsersAction) -> None:

@@ -41,7 +41,15 @@ SUMMARY_METRICS = (
 """Metrics a summary reports. ``reached_target`` is a share (Wilson interval); times and
 distances to the target or to victims average the episodes that got there."""
 
-TEAM_METRICS = ("overlap", "messages", "linked_to_base_share", "victims_reported")
+TEAM_METRICS = (
+    "overlap",
+    "messages",
+    "linked_to_base_share",
+    "victims_reported",
+    "doorways_reached",
+    "crossings_reached",
+    "rescue_score",
+)
 """Metrics a summary of team episodes reports too."""
 
 _RESAMPLES = 2000

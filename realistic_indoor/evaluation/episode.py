@@ -32,7 +32,15 @@ SCALARS = (
     "decisions",
 )
 """The per-episode numbers (``NaN`` where they do not apply), in the order outputs list them."""
-TEAM_SCALARS = ("overlap", "messages", "linked_to_base_share", "victims_reported")
+TEAM_SCALARS = (
+    "overlap",
+    "messages",
+    "linked_to_base_share",
+    "victims_reported",
+    "doorways_reached",
+    "crossings_reached",
+    "rescue_score",
+)
 """A team's own per-episode numbers (0 or ``NaN`` for a robot alone), listed after :data:`SCALARS`."""
 
 
@@ -76,6 +84,13 @@ class EpisodeResult:
         linked_to_base_share: Share of robot-steps a robot was connected to the base station,
             directly or through others (``NaN`` for a robot alone).
         victims_reported: Findings that reached the base station through the links (0 alone).
+        doorways_reached: Share of the building's inside doorways into rooms a robot came
+            within 1 m of (:mod:`~realistic_indoor.evaluation.rescue_score`; ``NaN`` alone or
+            without doorways).
+        crossings_reached: Share of the openings between corridors and halls a robot came
+            within 1 m of (``NaN`` alone or without any).
+        rescue_score: The RoboCup Rescue Virtual Robot League style score of the team's run
+            (:func:`~realistic_indoor.evaluation.rescue_score.rescue_score`; ``NaN`` alone).
         coverage_t: Coverage every ``curve_every_steps`` steps, from the start.
         curve_dt_s: Time between entries of ``coverage_t`` (s).
         coverage_d: Coverage every ``curve_every_m`` metres driven, from the start.
@@ -109,6 +124,9 @@ class EpisodeResult:
     messages: int = 0
     linked_to_base_share: float = math.nan
     victims_reported: int = 0
+    doorways_reached: float = math.nan
+    crossings_reached: float = math.nan
+    rescue_score: float = math.nan
     coverage_t: list[float] = field(default_factory=list)
     curve_dt_s: float = 0.0
     coverage_d: list[float] = field(default_factory=list)

@@ -9,6 +9,12 @@ import numpy as np
 
 from realistic_indoor.evaluation.episode import EpisodeResult, _Log
 from realistic_indoor.evaluation.overlap import ViewOverlap
+from realistic_indoor.evaluation.rescue_score import (
+    CheckpointTracker,
+    RescueScoreConfig,
+    checkpoints,
+    rescue_score,
+)
 from realistic_indoor.evaluation.tasks import EpisodeTask, make_team_env
 
 __all__ = ["run_team_episode", "team_info"]
@@ -33,7 +39,8 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
 
     The team agent (:func:`~realistic_indoor.agents.team.make_team_agent`) sees only the
     robots' observations and infos; the metrics come from the infos after each step, summed
-    over the robots where each has its own (distance, collisions, reward).
+    over the robots where each has its own (distance, collisions, reward), and the rescue score
+    from the robots' true poses (:mod:`~realistic_indoor.evaluation.rescue_score`).
 
     Raises:
         ConfigError: For an unknown team agent or a bad environment argument.
@@ -48,6 +55,9 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
         agent.reset(seed=task.seed)
         log = _Log(team_info(infos))
         views = _views(env, task.robots)
+        score = RescueScoreConfig()
+        reached = CheckpointTracker(checkpoints(env.simulation.world.building), score.reach_m)
+        reached.add(env.simulation.poses)
         thinking, linked = 0.0, []
         while env.agents:
             t0 = time.perf_counter()
@@ -56,6 +66,7 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
             observations, rewards, _, _, infos = env.step(actions)
             log.add(team_info(infos), float(sum(rewards.values())))
             linked.append(np.mean([i["linked_to_base"] for i in infos.values()]))
+            reached.add(env.simulation.poses)
             if views is not None:
                 views.add(env.simulation.poses, env.simulation.out.scan)
         config = env.config
@@ -69,6 +80,9 @@ def run_team_episode(task: EpisodeTask) -> EpisodeResult:
     result.linked_to_base_share = float(np.mean(linked)) if linked else float("nan")
     result.victims_reported = int(last.get("victims_reported", 0))
     result.overlap = 0.0 if views is None else views.share()
+    result.doorways_reached = reached.doorways_share
+    result.crossings_reached = reached.crossings_share
+    result.rescue_score = rescue_score(result.victims_reported, reached.share, config=score)
     return result
 
 

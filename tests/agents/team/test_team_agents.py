@@ -93,7 +93,8 @@ def test_same_seed__same_team_episode():
 
 def test_bad_input__one_line_config_errors():
     with pytest.raises(
-        ConfigError, match=r"unknown team agent .burgard.; valid: frontier, coordinated, hungarian, learned \(single"
+        ConfigError,
+        match=r"unknown team agent .burgard.; valid: frontier, coordinated, hungarian, learned \(single",
     ):
         make_team_agent("burgard", teams.parallel_env("OfficeExplore-v0", n_robots=2, **OFFICE))
     with pytest.raises(ConfigError, match="team agents need a team environment"):

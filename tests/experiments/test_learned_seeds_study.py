@@ -1,0 +1,81 @@
+import json
+import shutil
+from types import SimpleNamespace
+
+import pytest
+from script_loader import load_script
+
+
+def _load():
+    return load_script("experiments/learned_seeds.py")
+
+
+def _r(agent, env, seed, auc, group="offices"):
+    return SimpleNamespace(agent=agent, env=env, group=group, seed=seed, coverage_auc=auc)
+
+
+def _row(report, start):
+    line = next(line for line in report.splitlines() if line.startswith(start))
+    return [c.strip() for c in line.strip("|").split("|")]
+
+
+def test_report__kinds_average_their_seeds_per_building_before_pairing():
+    """Hand-made results: two realistic seeds, one random seed, frontier; two buildings."""
+    module = _load()
+    results = [
+        _r("learned_realistic_seed0", "o", 1, 0.80), _r("learned_realistic_seed0", "o", 2, 0.60),
+        _r("learned_realistic_seed1", "o", 1, 0.70), _r("learned_realistic_seed1", "o", 2, 0.80),
+        _r("learned_random_seed0", "o", 1, 0.70), _r("learned_random_seed0", "o", 2, 0.70),
+        _r("frontier", "o", 1, 0.70), _r("frontier", "o", 2, 0.70),
+        _r("utility", "o", 1, 0.70), _r("utility", "o", 2, 0.70),
+        _r("structure", "o", 1, 0.70), _r("structure", "o", 2, 0.70),
+    ]  # fmt: skip
+    meta = {"command": "c", "commit": "x", "baselines": "b", "episodes": 2, "seed": 1000, "sets": ["offices"]}
+    report = module.analyse(results, meta)
+    # realistic per building: (0.80 + 0.70) / 2 = 0.75 and (0.60 + 0.80) / 2 = 0.70
+    kind = _row(report, "| offices | **realistic (2 seeds)**")
+    assert kind[2:5] == ["2", "0.725", "+0.025 [+0.000, +0.050]"]
+    one = _row(report, "| offices | learned_realistic_seed0")
+    assert one[3:5] == ["0.700", "+0.000 [-0.100, +0.100]"]
+    versus = _row(report, "| offices | 2 |")
+    assert versus[2:] == ["0.725", "0.700", "+0.025 [+0.000, +0.050]"]
+    assert (
+        "- offices: learned minus frontier +0.025 [+0.000, +0.050], asked >= +0.010 with the interval above 0: not met"
+        in report
+    )
+    assert "- offices: learned minus structure +0.025 [+0.000, +0.050], asked >= -0.005: met" in report
+
+
+def test_models__found_by_name_realistic_first_then_by_seed(tmp_path):
+    module = _load()
+    for name in (
+        "learned_random_seed1",
+        "learned_realistic_seed2",
+        "learned_random_seed0",
+        "other",
+        "learned_x_seed1",
+    ):
+        (tmp_path / f"{name}.zip").write_bytes(b"")
+    assert list(module.find_models(tmp_path)) == [
+        "learned_realistic_seed2",
+        "learned_random_seed0",
+        "learned_random_seed1",
+    ]
+
+
+@pytest.mark.slow
+def test_small_run__the_same_model_trained_twice_differs_from_itself_by_nothing(tmp_path):
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL
+
+    models = tmp_path / "models"
+    models.mkdir()
+    for name in ("learned_realistic_seed0", "learned_random_seed0"):
+        shutil.copy(DEFAULT_MODEL, models / f"{name}.zip")
+    out = tmp_path / "out"
+    assert _load().main(["--small", "--models", str(models), "--out", str(out)]) == 0
+    data = json.loads((out / "learned_seeds" / "learned_random_seed0" / "results.json").read_text())
+    assert {e["agent"] for e in data["episodes"]} == {"learned_random_seed0"}
+    report = (out / "learned_seeds.md").read_text()
+    assert _row(report, "| houses | 2 |")[4] == "+0.000 [+0.000, +0.000]"
+    assert "| houses | **random (1 seeds)** | 2 |" in report

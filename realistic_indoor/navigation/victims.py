@@ -55,6 +55,21 @@ class VictimTracker:
             new += 1
         return new
 
+    def claim(self, positions: np.ndarray) -> int:
+        """Add victims someone else goes to (``(k, 2)`` m, this tracker's frame) as visited.
+
+        A position within ``merge_m`` of a victim already known is that victim and changes
+        nothing. Returns how many were added.
+        """
+        added = 0
+        for p in np.asarray(positions, dtype=float).reshape(-1, 2):
+            if len(self.positions) and np.min(np.hypot(*(self.positions - p).T)) < self.merge_m:
+                continue
+            self.positions = np.vstack([self.positions, p])
+            self.visited = np.append(self.visited, True)
+            added += 1
+        return added
+
     def next_target(self) -> int | None:
         """Index of the first victim not yet visited, or ``None``."""
         left = np.flatnonzero(~self.visited)

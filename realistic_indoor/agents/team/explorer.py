@@ -17,7 +17,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from realistic_indoor.agents.team.base import TeamAgent, TeamSpec
-from realistic_indoor.agents.team.knowledge import TeamFrames, TeamMaps, groups
+from realistic_indoor.agents.team.knowledge import TeamFrames, TeamMaps, groups, share_victims
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.navigation.frontiers import Frontiers
 from realistic_indoor.navigation.navigator import ExplorerConfig, Found, Navigator, PlanContext
@@ -80,13 +80,15 @@ class TeamExplorer(TeamAgent):
     def act(
         self, observations: dict[str, dict[str, np.ndarray]], infos: dict[str, dict[str, Any]]
     ) -> dict[str, np.ndarray | int]:
-        """Share maps within groups, then each robot in turn maps its scan, replans if needed and steers."""
+        """Share maps and detected victims within groups, then each robot in turn maps its scan, replans and steers."""
         agents = self.spec.agents
         if self._frames is None:
             self._frames = TeamFrames.from_infos(infos, agents)
         self._group = groups(observations, agents)
         for i in self._maps.update(self._group):
             self.navigators[i].use_map(self._maps.maps[i])
+        if self.spec.robot.victims is not None:
+            share_victims([nav.victims for nav in self.navigators], self._group)
         team_obs = [self._in_team_frame(i, observations[a]) for i, a in enumerate(agents)]
         self._poses = [tuple(float(v) for v in obs["pose"][:3]) for obs in team_obs]
         actions = {}

@@ -6,6 +6,7 @@ the *team frame*, robot 0's odometry frame. The robots linked directly or throug
 ``connected`` column of the ``teammates`` observation) form groups; what a robot knows of its
 teammates (their positions, their goals, their maps) comes only from its group.
 
+Robots of a group also tell each other the victims they detected (:func:`share_victims`).
 Maps follow the team's map sharing, as the environment's do: ``shared``, one map for the team;
 ``own``, a map each; ``comm``, the robots of a group map onto one map, a robot leaving a group
 keeps a copy, and groups that join merge their maps.
@@ -21,8 +22,9 @@ import numpy as np
 
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.navigation.own_map import OwnMap
+from realistic_indoor.navigation.victims import VictimTracker
 
-__all__ = ["TeamFrames", "TeamMaps", "groups"]
+__all__ = ["TeamFrames", "TeamMaps", "groups", "share_victims"]
 
 Pose = tuple[float, float, float]
 
@@ -86,6 +88,24 @@ def groups(observations: Mapping[str, Mapping[str, np.ndarray]], agents: list[st
             out[[j for j, c in zip(others, connected, strict=True) if c]] = label
         label += 1
     return out
+
+
+def share_victims(trackers: list[VictimTracker], group: np.ndarray) -> None:
+    """Tell each robot the victims its group detected: a teammate's victim is the teammate's to visit.
+
+    Every victim a robot of the group has detected (team frame) that robot ``i`` does not know
+    is added to ``i``'s tracker as visited, so that ``i`` does not drive to it too; the robot
+    that detected it goes on as before. Two robots that detect one victim in the same step both
+    keep it.
+
+    Args:
+        trackers: Each robot's detected victims, in the team frame.
+        group: ``(n,)`` each robot's group (:func:`groups`).
+    """
+    for i, mine in enumerate(trackers):
+        for j, theirs in enumerate(trackers):
+            if j != i and group[j] == group[i] and len(theirs.positions):
+                mine.claim(theirs.positions)
 
 
 class TeamMaps:

@@ -6,8 +6,9 @@ import math
 
 import numpy as np
 
-from realistic_indoor.agents.team.knowledge import TeamFrames, TeamMaps, groups
+from realistic_indoor.agents.team.knowledge import TeamFrames, TeamMaps, groups, share_victims
 from realistic_indoor.navigation.own_map import OwnMap
+from realistic_indoor.navigation.victims import VictimTracker
 from realistic_indoor.sim.mapping import MAPPED_UNKNOWN
 
 BEAMS = np.linspace(-math.pi / 2, math.pi / 2, 19)
@@ -70,3 +71,24 @@ def test_team_frames__poses_in_robot_0s_odometry_frame():
     frames = TeamFrames(np.array([[5.0, 5.0, math.pi / 2], [5.0, 6.0, math.pi / 2]]))
     assert np.allclose(frames.offsets[1], (1.0, 0.0, 0.0))  # one metre ahead of robot 0
     assert np.allclose(frames.to_team(1, np.array([2.0, 1.0, 0.5])), (3.0, 1.0, 0.5))
+
+
+def tracker(*points, visited=False):
+    t = VictimTracker(sensor_range_m=3.0, merge_m=1.0)
+    t.positions = np.array(points, dtype=float).reshape(-1, 2)
+    t.visited = np.full(len(t.positions), visited)
+    return t
+
+
+def test_share_victims__a_teammate_s_victim_is_known_as_visited_and_one_outside_the_group_is_not():
+    a = tracker((0.0, 0.0))  # robot 0 detected a victim at the origin
+    b = tracker((0.5, 0.5))  # robot 1 detected the same one, 0.71 m off: the same victim
+    c = tracker((10.0, 0.0))  # robot 2 detected another
+    d = tracker()  # robot 3, alone in its group
+    share_victims([a, b, c, d], np.array([0, 0, 0, 1]))
+    assert a.positions.tolist() == [[0.0, 0.0], [10.0, 0.0]] and a.visited.tolist() == [False, True]
+    assert b.positions.tolist() == [[0.5, 0.5], [10.0, 0.0]] and b.visited.tolist() == [False, True]
+    assert c.positions.tolist() == [[10.0, 0.0], [0.0, 0.0]] and c.visited.tolist() == [False, True]
+    assert len(d.positions) == 0
+    share_victims([a, b, c, d], np.array([0, 0, 0, 1]))  # a second time adds nothing
+    assert len(a.positions) == len(b.positions) == len(c.positions) == 2

@@ -106,3 +106,24 @@ def test_bad_input__one_line_config_errors():
         agent.act(observations, {a: {} for a in observations})
     with pytest.raises(ConfigError, match="n_robots"):
         TeamSpec(TeamSpec.from_env(env).robot, n_robots=teams.MAX_ROBOTS + 1)
+
+
+@pytest.mark.parametrize(("comm", "told"), [("unlimited", True), ("none", False)])
+def test_search__a_linked_teammate_knows_a_detected_victim_as_taken_and_an_unlinked_one_does_not(comm, told):
+    env = teams.parallel_env("OfficeSearch-v0", n_robots=2, comm=comm, map_sharing="comm", **OFFICE)
+    agent = make_team_agent("frontier", env)
+    observations, infos = env.reset(seed=1)
+    agent.reset(seed=1)
+    first = None
+    while env.agents and first is None:
+        observations, _, _, _, infos = env.step(agent.act(observations, infos))
+        seen = [len(nav.victims.positions) for nav in agent.navigators]
+        first = next((i for i, n in enumerate(seen) if n), None)
+    assert first is not None, "no victim detected in the episode"
+    other = agent.navigators[1 - first].victims
+    agent.act(observations, infos)
+    detected = agent.navigators[first].victims.positions[0]
+    known = [bool(np.hypot(*(p - detected)) < 1.0) for p in other.positions]
+    assert any(known) == told
+    if told:
+        assert other.visited[known.index(True)]

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y
+from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, wrap_angle
 
 
 @njit(cache=True, nogil=True)
@@ -114,5 +114,5 @@ def observe(
         cos0, sin0 = start_cos[i], start_sin[i]
         pose[i, 0] = np.minimum(np.maximum(cos0 * dx + sin0 * dy, -pose_limit), pose_limit)
         pose[i, 1] = np.minimum(np.maximum(-sin0 * dx + cos0 * dy, -pose_limit), pose_limit)
-        pose[i, 2] = np.remainder(phys[i, THETA] - start_heading[i] + np.pi, 2 * np.pi) - np.pi
+        pose[i, 2] = wrap_angle(phys[i, THETA] - start_heading[i])
     return scan, local.copy(), velocity, pose

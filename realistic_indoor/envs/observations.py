@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -206,21 +205,17 @@ def batch_observations(
     Returns:
         ``scan``, ``local_map``, ``velocity`` and ``pose``, each with a leading robot axis (new
         arrays), equal to the bit to what :class:`ScanObservation`, :class:`LocalMapObservation`,
-        :class:`VelocityObservation` and :class:`PoseObservation` give one robot. The heading
-        is wrapped as the single robot's odometry wraps it (``math.remainder``, exact); the
-        compiled kernel's ``remainder(t + pi, 2 pi) - pi`` can differ from it in the last bit,
-        which float32 rounding now and then keeps.
+        :class:`VelocityObservation` and :class:`PoseObservation` give one robot (the heading
+        wrapped by :func:`~realistic_indoor.sim.disc_physics.wrap_angle`, as the single robot's
+        odometry wraps it).
     """
     from realistic_indoor.envs._vector_kernels import observe
-    from realistic_indoor.sim.disc_physics import THETA
 
     heading = np.ascontiguousarray(starts[:, 2])
     scan, local_map, velocity, pose = observe(
         phys, np.ascontiguousarray(starts[:, 0]), np.ascontiguousarray(starts[:, 1]), heading, np.cos(heading),
         np.sin(heading), velocity_limits, POSE_LIMIT_M, scan_m, scan_scale, local,
     )  # fmt: skip
-    for i, (theta, theta0) in enumerate(zip(phys[:, THETA], starts[:, 2], strict=True)):
-        pose[i, 2] = math.remainder(float(theta) - float(theta0), math.tau)
     return {"scan": scan, "local_map": local_map, "velocity": velocity, "pose": pose}
 
 

@@ -6,7 +6,7 @@ import math
 from typing import TYPE_CHECKING, NamedTuple
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.disc_physics import DiscRobot, robot_in_world
+from realistic_indoor.sim.disc_physics import DiscRobot, robot_in_world, wrap_angle
 from realistic_indoor.sim.lidar import Lidar, Scan
 from realistic_indoor.sim.mapping import RobotMap
 from realistic_indoor.sim.victims import Victims, place_victims
@@ -141,4 +141,4 @@ class Simulation:
         x, y, t = self.robot.pose
         c, s = math.cos(t0), math.sin(t0)
         dx, dy = x - x0, y - y0
-        return (c * dx + s * dy, -s * dx + c * dy, math.remainder(t - t0, math.tau))
+        return (c * dx + s * dy, -s * dx + c * dy, float(wrap_angle(t - t0)))

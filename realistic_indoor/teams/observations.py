@@ -23,6 +23,7 @@ import numpy as np
 from gymnasium import spaces
 
 from realistic_indoor.envs.observations import POSE_LIMIT_M
+from realistic_indoor.sim.disc_physics import wrap_angle
 
 __all__ = ["base_space", "observe_base", "observe_teammates", "state_space", "teammates_space"]
 
@@ -66,7 +67,7 @@ def observe_teammates(poses: np.ndarray, links: np.ndarray, components: np.ndarr
     rows[..., 0] = links[:n, :n]
     rows[..., 1] = known
     rows[..., 2:4] = _relative(poses, poses[:, :2])
-    rows[..., 4] = np.remainder(poses[None, :, 2] - poses[:, None, 2] + np.pi, 2 * np.pi) - np.pi
+    rows[..., 4] = wrap_angle(poses[None, :, 2] - poses[:, None, 2])
     rows[~known, 2:] = 0.0
     others = ~np.eye(n, dtype=bool)
     return rows[others].reshape(n, n - 1, 5).astype(np.float32)

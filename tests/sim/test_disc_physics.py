@@ -123,3 +123,18 @@ def _nearest_segment_m(p, segments: np.ndarray) -> float:
     d = b - a
     t = np.clip(np.einsum("ij,ij->i", np.asarray(p) - a, d) / np.einsum("ij,ij->i", d, d), 0, 1)
     return float(np.min(np.hypot(*(a + t[:, None] * d - p).T)))
+
+
+def test_wrap_angle__equals_math_remainder_to_the_bit_over_three_half_turns_either_way():
+    import math
+
+    from realistic_indoor.sim.disc_physics import wrap_angle
+
+    rng = np.random.default_rng(0)
+    edges = [math.pi, 2 * math.pi, 3 * math.pi, math.pi / 2, 0.0, 1e-300]
+    edges += [np.nextafter(e, big) for e in edges for big in (-np.inf, np.inf)]
+    values = np.concatenate([rng.uniform(-3 * math.pi, 3 * math.pi, 20_000), edges, np.negative(edges)])
+    expected = np.array([math.remainder(v, math.tau) for v in values])
+    assert np.array_equal(wrap_angle(values), expected)  # the array form
+    assert all(wrap_angle(float(v)) == e for v, e in zip(values[:500], expected[:500], strict=True))
+    assert np.all(np.abs(expected) <= math.pi)

@@ -15,6 +15,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, wrap_angle
+from realistic_indoor.sim.mapping import coverage_share
 
 
 @njit(cache=True, nogil=True)
@@ -58,7 +59,7 @@ def account(
         if went:
             reward[i] = total
             truncated[i] = steps[i] >= max_steps
-        coverage[i] = observed[i] / max(reachable[i], 1.0) if reachable[i] > 0 else 1.0
+        coverage[i] = coverage_share(observed[i], reachable[i])
         observed_m2[i] = observed[i] * cell_m2[i]
     return reward, truncated, coverage, observed_m2, path.copy(), collisions.copy(), by_term
 

@@ -36,6 +36,16 @@ _NUDGE = 1e-3
 
 
 @njit(cache=True, nogil=True)
+def coverage_share(observed_cells: float, reachable_cells: float) -> float:
+    """Observed share of the reachable floor, in ``[0, 1]``; 1 for a building with no reachable cell.
+
+    The coverage rule of every environment (single, vector, team): cells observed over cells
+    reachable from the start (both counts of map cells).
+    """
+    return observed_cells / reachable_cells if reachable_cells > 0 else 1.0
+
+
+@njit(cache=True, nogil=True)
 def integrate_scan(
     grid,
     pooled,

@@ -20,6 +20,7 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_OCCUPIED,
     MAPPED_UNKNOWN,
     TRUTH_REACHABLE,
+    coverage_share,
     integrate_scan,
     map_targets,
     render_local,
@@ -46,6 +47,7 @@ __all__ = [
     "MapBits",
     "RobotMap",
     "beam_table",
+    "coverage_share",
 ]
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
@@ -164,7 +166,7 @@ class RobotMap:
     @property
     def coverage(self) -> float:
         """Observed share of the reachable floor, in ``[0, 1]``."""
-        return self._observed / self._reachable_cells if self._reachable_cells else 1.0
+        return coverage_share(self._observed, self._reachable_cells)
 
     @property
     def observed_area_m2(self) -> float:

@@ -15,6 +15,7 @@ from realistic_indoor.sim.batch import (
     step_constants,
 )
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y
+from realistic_indoor.sim.mapping import coverage_share
 from realistic_indoor.sim.raycast import RayHits
 from realistic_indoor.sim.victims import Victims, place_victims
 from realistic_indoor.sim.world import World
@@ -97,13 +98,15 @@ class TeamSimulation:
     @property
     def coverage(self) -> float:
         """Share of the reachable floor the team has observed (its team map)."""
-        reachable = self.batch.building_meta[0, 3]
-        return float(self.batch.observed[self.maps.coverage_map] / reachable) if reachable > 0 else 1.0
+        return float(
+            coverage_share(self.batch.observed[self.maps.coverage_map], self.batch.building_meta[0, 3])
+        )
 
     def own_coverage(self, i: int) -> float:
         """Share of the reachable floor robot ``i``'s map holds."""
-        reachable = self.batch.building_meta[0, 3]
-        return float(self.batch.observed[self.batch.robot_map[i]] / reachable) if reachable > 0 else 1.0
+        return float(
+            coverage_share(self.batch.observed[self.batch.robot_map[i]], self.batch.building_meta[0, 3])
+        )
 
     def returned_beams(self, offsets: np.ndarray) -> np.ndarray:
         """``(n, n_beams)`` bool: which beams of each robot's latest scan returned from a wall (cast again)."""

@@ -245,3 +245,11 @@ def test_free_space_marker__mark_unknown_marks_only_the_unknown_cells_it_sweeps(
     assert marker.mark_unknown(pose, ranges, window) == 0  # nothing left to mark
     with pytest.raises(ConfigError, match="uint8 cells of that shape"):
         marker.mark_unknown(pose, ranges, np.zeros((40, 41), dtype=np.uint8))
+
+
+def test_coverage_share__observed_over_reachable_and_full_where_nothing_is_reachable():
+    from realistic_indoor.sim.mapping import coverage_share
+
+    assert coverage_share(3, 4) == 0.75
+    assert coverage_share(0.0, 8.0) == 0.0
+    assert coverage_share(0, 0) == 1.0  # nothing to observe: done

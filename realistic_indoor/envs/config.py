@@ -5,7 +5,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field, fields, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.checks import require_between, require_int
 from realistic_indoor.envs.actions import ACTION_TYPES
@@ -26,6 +26,9 @@ from realistic_indoor.sim.mapping import LocalMapConfig
 from realistic_indoor.sim.robot import RobotConfig
 from realistic_indoor.sim.victims import VictimConfig
 from realistic_indoor.sim.world import WorldConfig
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["MAX_STEPS", "TASK_FIELDS", "EnvConfig", "require_reset_options", "require_task_fields"]
 
@@ -159,6 +162,14 @@ class EnvConfig:
             value = getattr(self, name)
             if not isinstance(value, cls):
                 raise ConfigError(f"EnvConfig.{name} must be a {cls.__name__}, got {type(value).__name__}")
+
+    def explored(self, coverage: float | np.ndarray) -> bool | np.ndarray:
+        """Whether ``coverage`` (a share, or an array of them) ends an exploration episode.
+
+        The rule of every exploration environment, single, vector or team: the coverage target
+        is reached.
+        """
+        return coverage >= self.coverage_target
 
     def replace(self, **changes: Any) -> EnvConfig:
         """A copy with some fields changed (checked again).

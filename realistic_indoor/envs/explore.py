@@ -436,7 +436,7 @@ class ExploreEnv(gym.Env):
         return reward_terms(outcome.new_area_m2, outcome.collided, outcome.victims_found)
 
     def _terminated(self) -> bool:
-        return self._sim.map.coverage >= self.config.coverage_target
+        return bool(self.config.explored(self._sim.map.coverage))
 
     def _info(self) -> dict[str, Any]:
         sim = self._sim

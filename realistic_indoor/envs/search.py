@@ -149,14 +149,10 @@ class SearchEnv(ExploreEnv):
         self._sim.reset(self.np_random, victims_xy=xy)
 
     def _terminated(self) -> bool:
-        return bool(_victims_of(self._sim).found.all())
+        return _victims_of(self._sim).all_found
 
     def _info(self) -> dict[str, Any]:
-        info = super()._info()
-        found = _victims_of(self._sim).found
-        info["victims_found"] = int(found.sum())
-        info["victims_total"] = len(found)
-        return info
+        return {**super()._info(), **_victims_of(self._sim).counts()}
 
 
 def _victims_of(sim: Simulation) -> Victims:

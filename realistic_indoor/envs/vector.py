@@ -379,7 +379,7 @@ class BatchedExploreEnv(VectorEnv):
 
     def _done(self, coverage: np.ndarray) -> np.ndarray:
         """``(num_envs,)`` whether each sub-environment's task is complete, given its coverage."""
-        return coverage >= self.config.coverage_target
+        return self.config.explored(coverage)
 
     def _victims_of(self, k: int) -> tuple[np.ndarray, np.ndarray] | None:
         """Sub-environment ``k``'s victim positions and found flags, drawn by :meth:`render`."""

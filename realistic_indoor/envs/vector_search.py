@@ -90,7 +90,7 @@ class BatchedSearchEnv(BatchedExploreEnv):
             self._terms[k, _VICTIM] = self._victims[k].look(world.raycaster, self._pose(int(k)))
 
     def _done(self, coverage: np.ndarray) -> np.ndarray:
-        return np.array([v.found.all() for v in self._victims])
+        return np.array([v.all_found for v in self._victims])
 
     def _observe(self) -> dict[str, np.ndarray]:
         obs = super()._observe()
@@ -104,8 +104,9 @@ class BatchedSearchEnv(BatchedExploreEnv):
     ) -> dict[str, Any]:
         info = super()._info(progress, rewards, mask)
         mask = info["_coverage"]
-        info["victims_found"] = np.array([int(v.found.sum()) for v in self._victims])
-        info["victims_total"] = np.array([len(v.found) for v in self._victims])
+        counts = [v.counts() for v in self._victims]
+        for key in ("victims_found", "victims_total"):
+            info[key] = np.array([c[key] for c in counts])
         info["_victims_found"] = info["_victims_total"] = mask
         return info
 

@@ -205,6 +205,15 @@ class Victims:
         self.found = np.zeros(len(self.xy), dtype=bool)
         self.look(raycaster, pose)
 
+    @property
+    def all_found(self) -> bool:
+        """Whether every victim has been found: what ends a search episode (single, vector or team)."""
+        return bool(self.found.all())
+
+    def counts(self) -> dict[str, int]:
+        """The environments' ``info`` entries of a search: ``victims_found`` and ``victims_total``."""
+        return {"victims_found": int(self.found.sum()), "victims_total": len(self.found)}
+
     def look(self, raycaster: Raycaster, pose: tuple[float, float, float]) -> int:
         """Sense the victims from ``pose`` and mark those seen for the first time found.
 

@@ -253,8 +253,8 @@ class TeamParallelEnv(ParallelEnv):
     def _task_done(self) -> bool:
         sim = self._sim
         if sim.victims is not None:
-            return bool(sim.victims.found.all())
-        return sim.coverage >= self.config.coverage_target
+            return sim.victims.all_found
+        return bool(self.config.explored(sim.coverage))
 
     def _observe(self) -> dict[str, dict[str, np.ndarray]]:
         sim = self._sim
@@ -285,8 +285,7 @@ class TeamParallelEnv(ParallelEnv):
             "map_cells_sent": sim.cells_sent,
         }
         if sim.victims is not None:
-            team["victims_found"] = int(sim.victims.found.sum())
-            team["victims_total"] = len(sim.victims.found)
+            team.update(sim.victims.counts())
             team["victims_reported"] = int(sim.reported.sum())
         n = self.team.n_robots
         return {

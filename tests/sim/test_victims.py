@@ -111,3 +111,14 @@ def test_relative_polar__ranges_and_bearings():
 def test_victim_config__bad_values_raise_config_error(kwargs):
     with pytest.raises(ConfigError):
         VictimConfig(**kwargs)
+
+
+def test_victims__counts_and_the_end_of_a_search_follow_the_found_flags():
+    from realistic_indoor.sim.victims import Victims
+
+    victims = Victims()
+    victims.found = np.array([True, False, True])
+    assert victims.counts() == {"victims_found": 2, "victims_total": 3}
+    assert not victims.all_found
+    victims.found[1] = True
+    assert victims.all_found and victims.counts()["victims_found"] == 3

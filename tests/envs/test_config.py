@@ -1,5 +1,3 @@
-
-
 def test_explored__the_coverage_target_ends_exploration_for_one_coverage_or_many():
     import numpy as np
 

@@ -4,8 +4,9 @@ Every model ``learned_<kind>_seed<N>`` (kind ``realistic``: trained on generated
 schools and houses; ``random``: on World-Generator-like random maps, the same budget) runs on
 the sets of ``experiments/learned_explorer.py``: generated offices, schools and houses (10 seeds
 from 1000, default sizes and step limits: never trained or tuned on) and every shared real plan
-(one episode each). The classical explorers' episodes on those sets are read from that script's
-run (``--baselines``): they do not depend on the model.
+(one episode each; the sets, their labels and plans are that script's, imported as a sibling
+module). The classical explorers' episodes on those sets are read from that script's run
+(``--baselines``): they do not depend on the model.
 
 The report gives, per model and per kind (each building's AUC averaged over the kind's seeds),
 the learned explorer's paired difference from the nearest-frontier, utility and structure
@@ -30,8 +31,9 @@ from pathlib import Path
 from statistics import fmean
 from typing import Any
 
+from learned_explorer import GENERATED, REAL, Setup, env_sets
+
 ROOT = Path(__file__).resolve().parents[1]
-REAL_PLANS = ROOT.parent / "shared" / "data" / "real_floorplans"
 RUNS = ROOT / "runs" / "learned_seeds"
 MODELS = ROOT / "experiments" / "results" / "learned_explorer_models"
 BASELINES = ROOT / "experiments" / "results" / "learned_explorer" / "results.json"
@@ -39,8 +41,6 @@ COMMITTED = {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "le
 """Models kept elsewhere than the models folder: the realistic seed-0 model is the package's own."""
 
 CLASSICAL = ("frontier", "utility", "structure")
-GENERATED = {"offices": "OfficeExplore-v0", "schools": "SchoolExplore-v0", "houses": "HouseExplore-v0"}
-REAL = {"real offices": ("OfficeExplore-v0", "office"), "real schools": ("SchoolExplore-v0", "school")}
 KINDS = ("realistic", "random")
 METRIC = "coverage_auc"
 NAME = re.compile(r"^learned_(realistic|random)_seed(\d+)$")
@@ -93,7 +93,7 @@ def main(argv: list[str] | None = None) -> int:
     episodes, sets, env_kwargs = (
         (2, ("houses",), {"max_steps": 60}) if args.small else (10, tuple(GENERATED), {})
     )
-    generated, real = env_sets(sets, not args.small, env_kwargs)
+    generated, real = env_sets(Setup(episodes, sets=sets, real=not args.small, env_kwargs=env_kwargs))
     results = [r for r in baselines if r.agent in CLASSICAL]
     if args.small:
         tasks = make_tasks(list(CLASSICAL), generated, episodes, seed=1000)
@@ -149,23 +149,6 @@ def _relative(path: Path) -> str:
         return str(path.resolve().relative_to(ROOT))
     except ValueError:
         return path.name
-
-
-def env_sets(sets: tuple[str, ...], with_real: bool, env_kwargs: dict[str, Any]) -> tuple[list, list]:
-    """The generated sets (one spec each) and the real plans (one spec per plan)."""
-    from realistic_indoor.evaluation import EnvSpec
-
-    generated = [EnvSpec(GENERATED[s], kwargs=dict(env_kwargs), label=s, group=s) for s in sets]
-    real = []
-    for label, (env_id, folder) in REAL.items() if with_real else ():
-        plans = sorted((REAL_PLANS / folder).glob("*.xml")) if (REAL_PLANS / folder).is_dir() else []
-        real += [
-            EnvSpec(env_id, str(plan), dict(env_kwargs), label=f"{label}: {plan.stem}", group=label)
-            for plan in plans
-        ]
-    if with_real and not real:
-        print(f"no real plans at {REAL_PLANS}: the real-buildings sets are left out", flush=True)
-    return generated, real
 
 
 def analyse(results: list, meta: dict[str, Any]) -> str:

@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from realistic_indoor.evaluation.episode import EpisodeResult
+from realistic_indoor.evaluation.episode import TEAM_SCALARS, EpisodeResult
 
 __all__ = [
     "SUMMARY_METRICS",
@@ -41,15 +41,7 @@ SUMMARY_METRICS = (
 """Metrics a summary reports. ``reached_target`` is a share (Wilson interval); times and
 distances to the target or to victims average the episodes that got there."""
 
-TEAM_METRICS = (
-    "overlap",
-    "messages",
-    "linked_to_base_share",
-    "victims_reported",
-    "doorways_reached",
-    "crossings_reached",
-    "rescue_score",
-)
+TEAM_METRICS = TEAM_SCALARS
 """Metrics a summary of team episodes reports too."""
 
 _RESAMPLES = 2000

@@ -48,11 +48,7 @@ class VictimTracker:
                     y + rng * self.sensor_range_m * math.sin(angle),
                 ]
             )
-            if len(self.positions) and np.min(np.hypot(*(self.positions - p).T)) < self.merge_m:
-                continue
-            self.positions = np.vstack([self.positions, p])
-            self.visited = np.append(self.visited, False)
-            new += 1
+            new += self._add(p, visited=False)
         return new
 
     def claim(self, positions: np.ndarray) -> int:
@@ -61,14 +57,15 @@ class VictimTracker:
         A position within ``merge_m`` of a victim already known is that victim and changes
         nothing. Returns how many were added.
         """
-        added = 0
-        for p in np.asarray(positions, dtype=float).reshape(-1, 2):
-            if len(self.positions) and np.min(np.hypot(*(self.positions - p).T)) < self.merge_m:
-                continue
-            self.positions = np.vstack([self.positions, p])
-            self.visited = np.append(self.visited, True)
-            added += 1
-        return added
+        return sum(self._add(p, visited=True) for p in np.asarray(positions, dtype=float).reshape(-1, 2))
+
+    def _add(self, p: np.ndarray, visited: bool) -> int:
+        """Add the victim at ``p`` unless one known is within ``merge_m``; 1 if added, else 0."""
+        if len(self.positions) and np.min(np.hypot(*(self.positions - p).T)) < self.merge_m:
+            return 0
+        self.positions = np.vstack([self.positions, p])
+        self.visited = np.append(self.visited, visited)
+        return 1
 
     def next_target(self) -> int | None:
         """Index of the first victim not yet visited, or ``None``."""

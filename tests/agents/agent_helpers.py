@@ -116,3 +116,28 @@ def small_env(env_id: str, max_steps: int = 40, **kwargs) -> gym.Env:
         else:
             kwargs["generator"] = HallOffices()
     return gym.make(env_id, max_steps=max_steps, max_episode_steps=max_steps, **kwargs)
+
+
+class AlwaysChoose:
+    """A stand-in learned model: always chooses ``choice`` among 16 candidates; records what it saw."""
+
+    def __init__(self, choice: int = 0) -> None:
+        self.action_space = gym.spaces.Discrete(16)
+        self.choice = choice
+        self.seen: list[dict] = []
+
+    def predict(self, obs, action_masks=None, deterministic=True):
+        self.seen.append({"obs": obs, "mask": action_masks})
+        return np.int64(self.choice), None
+
+
+def team_actions(agent, env, seed, steps=None):
+    """Run team ``agent`` on team ``env`` from ``seed``; each step's actions (``(steps, robots, ...)``)."""
+    observations, infos = env.reset(seed=seed)
+    agent.reset(seed=seed)
+    out = []
+    while env.agents and (steps is None or len(out) < steps):
+        actions = agent.act(observations, infos)
+        out.append([np.asarray(actions[a]) for a in sorted(actions)])
+        observations, _, _, _, infos = env.step(actions)
+    return np.array(out)

@@ -14,6 +14,7 @@ import sys
 import gymnasium as gym
 import numpy as np
 import pytest
+from agent_helpers import AlwaysChoose
 
 from realistic_indoor.agents import make_agent
 from realistic_indoor.agents.rl.learned import expert_choice
@@ -52,26 +53,13 @@ def test_expert__goes_to_a_detected_victim_first_and_never_to_a_missing_candidat
     assert expert_choice(flat, mask) == 1  # rows 2 and 3 are zeros (cost 0) but do not exist
 
 
-class _Always:
-    """A stand-in model: always chooses ``choice`` among 16 candidates."""
-
-    def __init__(self, choice: int = 0) -> None:
-        self.action_space = gym.spaces.Discrete(16)
-        self.choice = choice
-        self.seen: list[dict] = []
-
-    def predict(self, obs, action_masks=None, deterministic=True):
-        self.seen.append({"obs": obs, "mask": action_masks})
-        return np.int64(self.choice), None
-
-
 @pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
 def test_learned_agent__choosing_0_drives_as_the_nearest_frontier_explorer(env_id):
     kwargs = {"area_m2": 600.0} if env_id.startswith("Office") else {}
     runs = {}
     for name in ("frontier", "learned"):
         env = gym.make(env_id, **kwargs)
-        options = {"model": _Always()} if name == "learned" else {}
+        options = {"model": AlwaysChoose()} if name == "learned" else {}
         agent = make_agent(name, env, **options)
         obs, info = env.reset(seed=5)
         agent.reset()
@@ -89,7 +77,7 @@ def test_learned_agent__choosing_0_drives_as_the_nearest_frontier_explorer(env_i
 
 def test_learned_agent__shows_the_policy_what_the_macro_environment_shows():
     """The agent's policy sees, decision by decision, the macro environment's observation."""
-    model = _Always()
+    model = AlwaysChoose()
     env = gym.make("OfficeExplore-v0", area_m2=600.0, max_steps=400)
     agent = make_agent("learned", env, model=model)
     assert agent.max_steps == 400  # read from the environment

@@ -7,6 +7,7 @@ from script_loader import load_script
 
 
 def _load():
+    load_script("experiments/learned_explorer.py")  # the script imports it as a sibling module
     return load_script("experiments/learned_seeds.py")
 
 

@@ -8,6 +8,8 @@ import pytest
 
 pytest.importorskip("pettingzoo", reason="the team environments need PettingZoo (the 'teams' extra)")
 
+from agent_helpers import team_actions
+
 from realistic_indoor import teams
 from realistic_indoor.agents import make_agent
 from realistic_indoor.agents.team import TEAM_AGENTS, TeamSpec, make_team_agent
@@ -15,18 +17,6 @@ from realistic_indoor.errors import ConfigError
 
 OFFICE = {"area_m2": 300.0, "max_steps": 250}
 """A small office and a short episode keep the tests fast."""
-
-
-def team_actions(agent, env, seed, steps=None):
-    """Run ``agent`` on ``env`` from ``seed``; return each step's actions (``(steps, robots, ...)``)."""
-    observations, infos = env.reset(seed=seed)
-    agent.reset(seed=seed)
-    out = []
-    while env.agents and (steps is None or len(out) < steps):
-        actions = agent.act(observations, infos)
-        out.append([np.asarray(actions[a]) for a in sorted(actions)])
-        observations, _, _, _, infos = env.step(actions)
-    return np.array(out)
 
 
 @pytest.mark.parametrize("name", sorted(set(TEAM_AGENTS) - {"learned"}))

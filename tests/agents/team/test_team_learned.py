@@ -8,6 +8,8 @@ import pytest
 
 pytest.importorskip("pettingzoo", reason="the team environments need PettingZoo (the 'teams' extra)")
 
+from agent_helpers import AlwaysChoose, team_actions
+
 from realistic_indoor import teams
 from realistic_indoor.agents import make_agent
 from realistic_indoor.agents.team import make_team_agent
@@ -15,31 +17,6 @@ from realistic_indoor.errors import ConfigError
 
 OFFICE = {"area_m2": 300.0, "max_steps": 250}
 """A small office and a short episode keep the tests fast."""
-
-
-class _Always:
-    """A stand-in model: always chooses ``choice`` among 16 candidates; records what it saw."""
-
-    def __init__(self, choice: int = 0) -> None:
-        self.action_space = gym.spaces.Discrete(16)
-        self.choice = choice
-        self.seen: list[dict] = []
-
-    def predict(self, obs, action_masks=None, deterministic=True):
-        self.seen.append({"obs": obs, "mask": action_masks})
-        return np.int64(self.choice), None
-
-
-def team_actions(agent, env, seed, steps=None):
-    """Run ``agent`` on ``env`` from ``seed``; return each step's actions (``(steps, robots, ...)``)."""
-    observations, infos = env.reset(seed=seed)
-    agent.reset(seed=seed)
-    out = []
-    while env.agents and (steps is None or len(out) < steps):
-        actions = agent.act(observations, infos)
-        out.append([np.asarray(actions[a]) for a in sorted(actions)])
-        observations, _, _, _, infos = env.step(actions)
-    return np.array(out)
 
 
 def single_run(model, seed):
@@ -60,7 +37,7 @@ def single_run(model, seed):
 
 def test_choosing_0__every_robot_goes_to_its_nearest_frontier_as_uncoordinated_frontier_does():
     env = teams.parallel_env("OfficeExplore-v0", n_robots=3, comm="unlimited", **OFFICE)
-    model = _Always(0)
+    model = AlwaysChoose(0)
     learned = team_actions(make_team_agent("learned", env, model=model), env, seed=3, steps=200)
     frontier = team_actions(make_team_agent("frontier", env), env, seed=3, steps=200)
     assert np.array_equal(learned, frontier)
@@ -68,7 +45,7 @@ def test_choosing_0__every_robot_goes_to_its_nearest_frontier_as_uncoordinated_f
 
 
 def test_one_robot_alone__the_policy_sees_and_does_what_the_single_learned_agent_does():
-    model, alone = _Always(1), _Always(1)
+    model, alone = AlwaysChoose(1), AlwaysChoose(1)
     expected = single_run(alone, seed=6)
     env = teams.parallel_env("OfficeExplore-v0", n_robots=1, comm="none", map_sharing="own", **OFFICE)
     agent = make_team_agent("learned", env, model=model)
@@ -84,8 +61,8 @@ def test_one_robot_alone__the_policy_sees_and_does_what_the_single_learned_agent
 
 def test_a_choice_other_than_0__drives_somewhere_else_than_the_nearest_frontier():
     env = teams.parallel_env("OfficeExplore-v0", n_robots=2, comm="unlimited", **OFFICE)
-    second = team_actions(make_team_agent("learned", env, model=_Always(1)), env, seed=3, steps=120)
-    nearest = team_actions(make_team_agent("learned", env, model=_Always(0)), env, seed=3, steps=120)
+    second = team_actions(make_team_agent("learned", env, model=AlwaysChoose(1)), env, seed=3, steps=120)
+    nearest = team_actions(make_team_agent("learned", env, model=AlwaysChoose(0)), env, seed=3, steps=120)
     assert not np.array_equal(second, nearest)
 
 

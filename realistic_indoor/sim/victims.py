@@ -201,9 +201,17 @@ class Victims:
             raycaster: The world's raycaster (line of sight).
             pose: ``(x, y, theta)`` of the sensor at the start (m, m, rad).
         """
+        self.start(xy)
+        self.look(raycaster, pose)
+
+    def start(self, xy: np.ndarray) -> None:
+        """Put the victims at ``xy`` (``(N, 2)`` m), none found yet, without looking.
+
+        For a team, whose robots all look (:meth:`reset` is one robot's start).
+        """
         self.xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         self.found = np.zeros(len(self.xy), dtype=bool)
-        self.look(raycaster, pose)
+        self.in_view = np.zeros(len(self.xy), dtype=bool)
 
     @property
     def all_found(self) -> bool:

@@ -149,8 +149,7 @@ class TeamSimulation:
         self._run(RESET, rng)
         if self.victims is not None:
             xy = place_victims(world, rng, self.config.victims) if victims_xy is None else victims_xy
-            self.victims.xy = np.asarray(xy, dtype=float).reshape(-1, 2)
-            self.victims.found = np.zeros(len(self.victims.xy), dtype=bool)
+            self.victims.start(xy)
             self.known = np.zeros((self.n, len(self.victims.xy)), dtype=bool)
             self.reported = np.zeros(len(self.victims.xy), dtype=bool)
             self.look()

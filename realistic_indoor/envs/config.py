@@ -8,7 +8,7 @@ from dataclasses import dataclass, field, fields, replace
 from typing import TYPE_CHECKING, Any
 
 from realistic_indoor.checks import require_between, require_int
-from realistic_indoor.envs.actions import ACTION_TYPES
+from realistic_indoor.envs.actions import ACTION_TYPES, PRIMITIVE_ACTION_TYPES
 from realistic_indoor.envs.macro import MacroConfig
 from realistic_indoor.envs.observations import EXTRA_OBSERVATIONS, GlobalMapConfig
 from realistic_indoor.envs.rewards import RewardWeights
@@ -162,6 +162,28 @@ class EnvConfig:
             value = getattr(self, name)
             if not isinstance(value, cls):
                 raise ConfigError(f"EnvConfig.{name} must be a {cls.__name__}, got {type(value).__name__}")
+
+    def batch_refusal(self) -> tuple[str, str] | None:
+        """What of this configuration the batched simulation (vector and team envs) does not run.
+
+        Returns:
+            ``None`` if it runs all of it, else ``(kind, what)``: ``kind`` one of ``"physics"``
+            (pymunk: the batch runs the compiled physics only), ``"actions"`` (macro actions:
+            it runs primitive ones), ``"observations"`` (extra observations) or ``"reward"``
+            (the ``coverage_auc`` term), and ``what`` the setting, as a message names it.
+        """
+        if self.robot.physics != "compiled":
+            return "physics", f"robot physics {self.robot.physics!r} (only the compiled physics runs batched)"
+        if self.action_type not in PRIMITIVE_ACTION_TYPES:
+            return (
+                "actions",
+                f"action_type {self.action_type!r} (only primitive actions, continuous or discrete, run batched)",
+            )
+        if self.observation_extras:
+            return "observations", f"the extra observations {list(self.observation_extras)}"
+        if self.rewards.coverage_auc != 0.0:
+            return "reward", "the coverage_auc reward term"
+        return None
 
     def explored(self, coverage: float | np.ndarray) -> bool | np.ndarray:
         """Whether ``coverage`` (a share, or an array of them) ends an exploration episode.

@@ -20,7 +20,7 @@ from numba.typed import List
 
 from realistic_indoor.checks import require_int
 from realistic_indoor.envs._vector_kernels import account, observe
-from realistic_indoor.envs.actions import PRIMITIVE_ACTION_TYPES, ActionMap
+from realistic_indoor.envs.actions import ActionMap
 from realistic_indoor.envs.config import EnvConfig, require_reset_options, require_task_fields
 from realistic_indoor.envs.observations import POSE_LIMIT_M, explore_observations
 from realistic_indoor.envs.presets import base_config
@@ -123,25 +123,11 @@ class BatchedExploreEnv(VectorEnv):
             overrides = {"max_steps": max_episode_steps, **overrides}
         self.config = base_config(config, preset).replace(**overrides)
         require_task_fields(self.config, self.task, overrides)
-        if self.config.robot.physics != "compiled":
+        if refused := self.config.batch_refusal():
+            kind, what = refused
+            mode = "'async' (one process per copy)" if kind == "actions" else "'sync'"
             raise ConfigError(
-                f"the native vector env runs the compiled physics only, got robot physics "
-                f"{self.config.robot.physics!r}; use gym.make_vec(..., vectorization_mode='sync') for pymunk"
-            )
-        if self.config.action_type not in PRIMITIVE_ACTION_TYPES:
-            raise ConfigError(
-                f"the native vector env runs primitive actions (continuous, discrete), got action_type "
-                f"{self.config.action_type!r}; use gym.make_vec(..., vectorization_mode='async') (one process per copy) for macro actions"
-            )
-        if self.config.observation_extras:
-            raise ConfigError(
-                f"the native vector env has no extra observations, got {list(self.config.observation_extras)}; "
-                "use gym.make_vec(..., vectorization_mode='sync') for them"
-            )
-        if self.config.rewards.coverage_auc != 0.0:
-            raise ConfigError(
-                "the native vector env has no coverage_auc reward term; "
-                "use gym.make_vec(..., vectorization_mode='sync') for it"
+                f"the native vector env cannot run {what}; use gym.make_vec(..., vectorization_mode={mode})"
             )
         self.num_envs = num_envs
         self.render_mode = render_mode

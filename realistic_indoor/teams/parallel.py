@@ -10,7 +10,7 @@ from gymnasium import spaces
 from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
-from realistic_indoor.envs.actions import PRIMITIVE_ACTION_TYPES, ActionMap
+from realistic_indoor.envs.actions import ActionMap
 from realistic_indoor.envs.observations import batch_observations, explore_observations, mark_points
 from realistic_indoor.envs.presets import preset_config
 from realistic_indoor.envs.render import Scene, draw_team
@@ -309,17 +309,13 @@ class _RobotView:
 
 
 def _require_team_config(config: Any) -> None:
-    """Refuse what a team does not run: macro actions, extra observations, coverage_auc, pymunk."""
-    if config.action_type not in PRIMITIVE_ACTION_TYPES:
-        raise ConfigError(
-            f"a team runs primitive actions (continuous, discrete), got action_type {config.action_type!r}; "
-            "run macro decisions per robot on the agent's side"
-        )
-    if config.observation_extras:
-        raise ConfigError(f"a team has no extra observations, got {list(config.observation_extras)}")
-    if config.rewards.coverage_auc != 0.0:
-        raise ConfigError("a team has no coverage_auc reward term; set rewards={'coverage_auc': 0.0}")
-    if config.robot.physics != "compiled":
-        raise ConfigError(
-            f"a team runs the compiled physics only, got robot physics {config.robot.physics!r}"
-        )
+    """Refuse what a team does not run (:meth:`~realistic_indoor.envs.config.EnvConfig.batch_refusal`)."""
+    if refused := config.batch_refusal():
+        kind, what = refused
+        fix = {
+            "actions": "run macro decisions per robot on the agent's side",
+            "reward": "set rewards={'coverage_auc': 0.0}",
+            "observations": "leave extra_observations out",
+            "physics": "leave robot physics at 'compiled'",
+        }[kind]
+        raise ConfigError(f"a team cannot run {what}; {fix}")

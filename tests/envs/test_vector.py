@@ -412,3 +412,18 @@ def test_vector_env__an_autoreset_whose_building_fails_changes_no_sub_env(toy_bu
     assert np.array_equal(envs.unwrapped._steps, steps)  # sub-env 0 was not reset alone
     obs, reward, *_ = envs.step(zero)  # the next step starts both
     assert (reward == 0).all() and np.allclose(obs["pose"], 0.0)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "said"),
+    [
+        ({"robot": {"physics": "pymunk"}}, "robot physics 'pymunk' (only the compiled physics runs batched); use gym.make_vec(..., vectorization_mode='sync')"),
+        ({"action_type": "frontier"}, "action_type 'frontier' (only primitive actions, continuous or discrete, run batched); use gym.make_vec(..., vectorization_mode='async' (one process per copy))"),
+        ({"extra_observations": ("global_map",)}, "the extra observations ['global_map']; use gym.make_vec(..., vectorization_mode='sync')"),
+        ({"rewards": {"coverage_auc": 1.0}}, "the coverage_auc reward term; use gym.make_vec(..., vectorization_mode='sync')"),
+    ],
+)  # fmt: skip
+def test_vector_env__what_it_cannot_run_is_a_one_line_error_naming_the_vectorization_that_can(kwargs, said):
+    with pytest.raises(ConfigError) as error:
+        gym.make_vec("OfficeExplore-v0", num_envs=2, **kwargs)
+    assert str(error.value) == f"the native vector env cannot run {said}"

@@ -201,3 +201,18 @@ def test_bad_actions__get_a_one_line_action_error():
         with pytest.raises(ActionError) as e:
             env.step(actions)
         assert "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "fix"),
+    [
+        ({"robot": {"physics": "pymunk"}}, "leave robot physics at 'compiled'"),
+        ({"action_type": "waypoint"}, "run macro decisions per robot on the agent's side"),
+        ({"extra_observations": ("time_left",)}, "leave extra_observations out"),
+        ({"rewards": {"coverage_auc": 1.0}}, "set rewards={'coverage_auc': 0.0}"),
+    ],
+)
+def test_team__what_a_team_cannot_run_is_a_one_line_error_with_the_fix(kwargs, fix):
+    with pytest.raises(ConfigError, match=r"^a team cannot run ") as error:
+        teams.parallel_env("OfficeExplore-v0", n_robots=2, **kwargs)
+    assert str(error.value).endswith(f"; {fix}") and "\n" not in str(error.value)

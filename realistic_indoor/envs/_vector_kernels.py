@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, wrap_angle
+from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, odometry
 from realistic_indoor.sim.mapping import coverage_share
 
 
@@ -110,10 +110,17 @@ def observe(
     for i in range(n):
         velocity[i, 0] = np.minimum(np.maximum(phys[i, V], -vw_limits[0]), vw_limits[0])
         velocity[i, 1] = np.minimum(np.maximum(phys[i, W], -vw_limits[1]), vw_limits[1])
-        dx = phys[i, X] - start_x[i]
-        dy = phys[i, Y] - start_y[i]
-        cos0, sin0 = start_cos[i], start_sin[i]
-        pose[i, 0] = np.minimum(np.maximum(cos0 * dx + sin0 * dy, -pose_limit), pose_limit)
-        pose[i, 1] = np.minimum(np.maximum(-sin0 * dx + cos0 * dy, -pose_limit), pose_limit)
-        pose[i, 2] = wrap_angle(phys[i, THETA] - start_heading[i])
+        x, y, heading = odometry(
+            phys[i, X],
+            phys[i, Y],
+            phys[i, THETA],
+            start_x[i],
+            start_y[i],
+            start_heading[i],
+            start_cos[i],
+            start_sin[i],
+        )
+        pose[i, 0] = np.minimum(np.maximum(x, -pose_limit), pose_limit)
+        pose[i, 1] = np.minimum(np.maximum(y, -pose_limit), pose_limit)
+        pose[i, 2] = heading
     return scan, local.copy(), velocity, pose

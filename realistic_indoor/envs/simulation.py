@@ -6,7 +6,7 @@ import math
 from typing import TYPE_CHECKING, NamedTuple
 
 from realistic_indoor.errors import ConfigError
-from realistic_indoor.sim.disc_physics import DiscRobot, robot_in_world, wrap_angle
+from realistic_indoor.sim.disc_physics import DiscRobot, odometry, robot_in_world
 from realistic_indoor.sim.lidar import Lidar, Scan
 from realistic_indoor.sim.mapping import RobotMap
 from realistic_indoor.sim.victims import Victims, place_victims
@@ -139,6 +139,5 @@ class Simulation:
         """The robot's pose in its map frame: relative to its start pose (m, m, rad in [-pi, pi])."""
         x0, y0, t0 = self.world.start_pose
         x, y, t = self.robot.pose
-        c, s = math.cos(t0), math.sin(t0)
-        dx, dy = x - x0, y - y0
-        return (c * dx + s * dy, -s * dx + c * dy, float(wrap_angle(t - t0)))
+        ox, oy, heading = odometry(x, y, t, x0, y0, t0, math.cos(t0), math.sin(t0))
+        return float(ox), float(oy), float(heading)

@@ -51,6 +51,7 @@ __all__ = [
     "drive",
     "drive_group",
     "drive_params",
+    "odometry",
     "robot_in_world",
     "segment_grid",
     "wrap_angle",
@@ -83,6 +84,20 @@ def wrap_angle(t: float | np.ndarray) -> float | np.ndarray:
     headings. Compiled, so kernels and Python share it.
     """
     return t - 2.0 * math.pi * np.rint(t / (2.0 * math.pi))
+
+
+@njit(cache=True, nogil=True)
+def odometry(
+    x: float, y: float, theta: float, x0: float, y0: float, theta0: float, cos0: float, sin0: float
+) -> tuple[float, float, float]:
+    """A pose ``(x, y, theta)`` in the odometry frame of the start pose ``(x0, y0, theta0)``.
+
+    ``x`` along the start heading, ``y`` to its left (m), the heading relative to the start's
+    (rad, :func:`wrap_angle`); ``cos0``, ``sin0`` are the start heading's. The odometry rule of
+    every robot, single, batched or in a team.
+    """
+    dx, dy = x - x0, y - y0
+    return cos0 * dx + sin0 * dy, -sin0 * dx + cos0 * dy, wrap_angle(theta - theta0)
 
 
 class SegmentGrid(NamedTuple):

@@ -15,7 +15,7 @@ import numpy as np
 from numba import njit
 
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y, odometry
-from realistic_indoor.sim.mapping import coverage_share
+from realistic_indoor.sim.mapping import coverage_share_compiled
 
 
 @njit(cache=True, nogil=True)
@@ -59,7 +59,7 @@ def account(
         if went:
             reward[i] = total
             truncated[i] = steps[i] >= max_steps
-        coverage[i] = coverage_share(observed[i], reachable[i])
+        coverage[i] = coverage_share_compiled(observed[i], reachable[i])
         observed_m2[i] = observed[i] * cell_m2[i]
     return reward, truncated, coverage, observed_m2, path.copy(), collisions.copy(), by_term
 

@@ -21,6 +21,7 @@ from realistic_indoor.sim._map_kernels import (
     MAPPED_UNKNOWN,
     TRUTH_REACHABLE,
     coverage_share,
+    coverage_share_compiled,
     integrate_scan,
     map_targets,
     render_local,
@@ -48,6 +49,7 @@ __all__ = [
     "RobotMap",
     "beam_table",
     "coverage_share",
+    "coverage_share_compiled",
 ]
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255

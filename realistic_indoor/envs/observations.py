@@ -135,7 +135,7 @@ class LocalMapObservation:
     def observe(self, sim: Simulation) -> np.ndarray:
         """The image around the robot's true pose (a new array)."""
         image = np.empty(self.space.shape, dtype=np.uint8)
-        sim.map.local_view(sim.robot.pose, out=image[0])
+        sim.local_view(image[0])
         return image
 
 

@@ -152,12 +152,8 @@ class BatchedExploreEnv(VectorEnv):
         self._mode = np.zeros(n, dtype=np.int64)
         self._commands = np.zeros((n, 2))
         self._noise = np.zeros((n, c.lidar.n_beams))
-        self._scan_m = np.zeros((n, c.lidar.n_beams), dtype=np.float32)
-        s = c.local_map.size_px
-        self._local_map = np.zeros((n, 1, s, s), dtype=np.uint8)
-        self._terms = np.zeros((n, len(self.term_names)))
-        self._motion = np.zeros(n)
-        self._out = StepOutputs(self._scan_m, self._local_map, self._terms, self._motion)
+        self._out = StepOutputs.zeros(n, c.lidar.n_beams, c.local_map.size_px, len(self.term_names))
+        self._scan_m, self._local_map, self._terms, self._motion = self._out[:4]
         self._steps = np.zeros(n, dtype=np.int64)
         self._path = np.zeros(n)
         self._collisions = np.zeros(n, dtype=np.int64)

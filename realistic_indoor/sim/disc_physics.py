@@ -203,6 +203,22 @@ class DiscRobot:
         self.reset(pose)
 
     @classmethod
+    def sharing(
+        cls, state: np.ndarray, grid: SegmentGrid, params: np.ndarray, config: RobotConfig
+    ) -> DiscRobot:
+        """A robot whose physics state is ``state``, in place: a row of a batch's states.
+
+        Args:
+            state: ``(STATE_SIZE,)`` float64 array the robot reads and writes (not copied).
+            grid: Its building's wall grid.
+            params: Its constants (:func:`drive_params` of ``config``).
+            config: Body, limits and control rate.
+        """
+        robot = cls.__new__(cls)
+        robot.config, robot.params, robot.grid, robot.state = config, params, grid, state
+        return robot
+
+    @classmethod
     def in_world(cls, world: World, config: RobotConfig | None = None) -> DiscRobot:
         """A robot among ``world``'s walls, at its start pose."""
         return cls(world.collision_segments, config, world.config.wall_thickness_m, world.start_pose)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -46,6 +46,7 @@ __all__ = [
     "FreeSpaceMarker",
     "LocalMapConfig",
     "MapBits",
+    "MapStorage",
     "RobotMap",
     "beam_table",
     "coverage_share",
@@ -86,6 +87,27 @@ class MapBits:
         """Back to the empty map's bits, in place (the arrays stay the same objects)."""
         self.todo[...] = self._todo_at_start
         self.walls[...] = self._walls_at_start
+
+
+class MapStorage(NamedTuple):
+    """The arrays a map lives in, when another owner holds them (a batch's map).
+
+    Attributes:
+        grid: ``(H, W)`` uint8 cell states, written in place.
+        pooled: The pooled cells, written in place.
+        targets: ``(H, W)`` uint8 what a beam may mark in each cell (read only).
+        bits: The map's to-do and wall bits.
+        observed: int64 reachable cells observed, per map of the owner; this map's count is
+            ``observed[index]``, updated in place.
+        index: This map's entry of ``observed``.
+    """
+
+    grid: np.ndarray
+    pooled: np.ndarray
+    targets: np.ndarray
+    bits: MapBits
+    observed: np.ndarray
+    index: int
 
 
 @dataclass(frozen=True)
@@ -132,25 +154,36 @@ class RobotMap:
     Args:
         world: The world whose cells and ground truth the map uses.
         local: Size and resolution of :meth:`local_view` images.
+        storage: Arrays of another owner to live in (a batch's map, whose compiled step then
+            updates this map: :meth:`realistic_indoor.sim.batch.Batch.map_storage`); by default
+            the map makes its own.
 
     Attributes:
         world: The world.
         local: The local-view settings.
     """
 
-    def __init__(self, world: World, local: LocalMapConfig | None = None) -> None:
+    def __init__(
+        self, world: World, local: LocalMapConfig | None = None, storage: MapStorage | None = None
+    ) -> None:
         self.world = world
         self.local = local or LocalMapConfig()
         self._res = world.raster.resolution_m
         self._x0, self._y0 = world.raster.origin
-        self._targets = _targets(world)
-        self._bits = MapBits(self._targets)
-        self._grid = np.zeros(world.raster.shape, dtype=np.uint8)
         self._pool = self.local.pooling(self._res)[0]
-        h, w = world.raster.shape
-        self._pooled = np.zeros((-(-h // self._pool), -(-w // self._pool)), dtype=np.uint8)
+        if storage is None:
+            targets = _targets(world)
+            h, w = world.raster.shape
+            storage = MapStorage(
+                np.zeros((h, w), dtype=np.uint8),
+                np.zeros((-(-h // self._pool), -(-w // self._pool)), dtype=np.uint8),
+                targets,
+                MapBits(targets),
+                np.zeros(1, dtype=np.int64),
+                0,
+            )
+        self._grid, self._pooled, self._targets, self._bits, self._counts, self._index = storage
         self._reachable_cells = int(np.count_nonzero(world.reachable))
-        self._observed = 0
         self._offsets: np.ndarray | None = None
         self._cos = self._sin = np.zeros(0)
         self._closed = False
@@ -164,6 +197,11 @@ class RobotMap:
         view = self._grid.view()
         view.setflags(write=False)
         return view
+
+    @property
+    def _observed(self) -> int:
+        """Reachable cells observed so far."""
+        return int(self._counts[self._index])
 
     @property
     def coverage(self) -> float:
@@ -186,7 +224,7 @@ class RobotMap:
         self._grid.fill(MAPPED_UNKNOWN)
         self._pooled.fill(MAPPED_UNKNOWN)
         self._bits.reset()
-        self._observed = 0
+        self._counts[self._index] = 0
 
     def update(self, scan: Scan) -> float:
         """Add a scan to the map.
@@ -220,7 +258,7 @@ class RobotMap:
             1.0 / self._res,
             self._closed,
         )
-        self._observed += new
+        self._counts[self._index] += new
         return new * self._res**2
 
     def local_view(self, pose: tuple[float, float, float], out: np.ndarray | None = None) -> np.ndarray:

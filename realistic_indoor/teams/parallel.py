@@ -199,7 +199,7 @@ class TeamParallelEnv(ParallelEnv):
         if sim.world is None:
             raise gym.error.ResetNeeded("call reset() before render()")
         offsets = beam_offsets(self.config.lidar)
-        returned = sim.returned_beams(offsets)
+        returned = sim.returned_beams
         team_grid = sim.batch.grids[sim.maps.coverage_map]
         victims = (None, None) if sim.victims is None else (sim.victims.xy, sim.victims.found)
         scenes = [

@@ -16,7 +16,7 @@ from realistic_indoor.sim.batch import (
 )
 from realistic_indoor.sim.disc_physics import THETA, V, W, X, Y
 from realistic_indoor.sim.mapping import coverage_share
-from realistic_indoor.sim.raycast import RayHits
+from realistic_indoor.sim.raster import RASTER_WALL
 from realistic_indoor.sim.victims import Victims, place_victims
 from realistic_indoor.sim.world import World
 from realistic_indoor.teams.links import connected
@@ -68,12 +68,7 @@ class TeamSimulation:
         self._mode = np.zeros(n, dtype=np.int64)
         self._commands = np.zeros((n, 2))
         self._noise = np.zeros((n, n_beams))
-        self.out = StepOutputs(
-            np.zeros((n, n_beams), np.float32),
-            np.zeros((n, 1, s, s), np.uint8),
-            np.zeros((n, 3)),
-            np.zeros(n),
-        )
+        self.out = StepOutputs.zeros(n, n_beams, s)
         self.victims = Victims(config.victims) if victims else None
         self.world: World | None = None
         self.starts = np.zeros((n, 3))
@@ -108,16 +103,10 @@ class TeamSimulation:
             coverage_share(self.batch.observed[self.batch.robot_map[i]], self.batch.building_meta[0, 3])
         )
 
-    def returned_beams(self, offsets: np.ndarray) -> np.ndarray:
-        """``(n, n_beams)`` bool: which beams of each robot's latest scan returned from a wall (cast again)."""
-        n_beams = len(offsets)
-        cos, sin = np.cos(offsets), np.sin(offsets)
-        out = np.zeros((self.n, n_beams), dtype=bool)
-        for i, pose in enumerate(self.poses):
-            hits = RayHits(np.empty(n_beams, np.float32), np.empty(n_beams, np.uint8))
-            self.world.raycaster.cast_into(*pose, cos, sin, self.config.lidar.max_range_m, hits)
-            out[i] = hits.returned
-        return out
+    @property
+    def returned_beams(self) -> np.ndarray:
+        """``(n, n_beams)`` bool: which beams of each robot's latest scan returned from a wall."""
+        return self.out.kinds == RASTER_WALL
 
     def load(self, building: Building) -> None:
         """Make ``building`` the current world (kept if it already is)."""

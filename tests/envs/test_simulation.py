@@ -1,6 +1,10 @@
-"""Simulation: its step finds the victims its sensor sees; without victims it senses none."""
+"""Simulation: a batch of one that steps as its parts composed by hand; victims found as sensed."""
 
 from __future__ import annotations
+
+import copy
+import pickle
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -9,6 +13,9 @@ from realistic_indoor.building import Building, Room
 from realistic_indoor.envs.config import EnvConfig
 from realistic_indoor.envs.simulation import Simulation
 from realistic_indoor.errors import ConfigError
+from realistic_indoor.sim.disc_physics import DiscRobot
+from realistic_indoor.sim.lidar import Lidar
+from realistic_indoor.sim.mapping import RobotMap
 from realistic_indoor.sim.victims import VictimConfig, place_victims
 
 RANGE_M = 3.0
@@ -67,3 +74,78 @@ def test_reset__draws_victims_after_the_first_scan(hall):
     assert np.array_equal(sim.scan.ranges_m, explore.scan.ranges_m)
     assert np.array_equal(sim.victims.xy, place_victims(explore.world, rng_explore, VICTIMS))
     assert rng.random() == rng_explore.random()
+
+
+def _by_hand(world, config):
+    """The single robot's parts composed one after the other: robot, laser, map, local view."""
+    robot = DiscRobot.in_world(world, config.robot)
+    return robot, Lidar(config.lidar), RobotMap(world, config.local_map)
+
+
+@pytest.mark.parametrize("noise_m", [0.0, 0.02])
+def test_batch_of_one__steps_as_the_robot_laser_and_map_composed_by_hand(toy_building, noise_m):
+    """The compiled physics runs on a batch of one; it must do exactly what the classes do."""
+    config = EnvConfig().replace(lidar=replace(EnvConfig().lidar, noise_std_m=noise_m))
+    sim = Simulation(config)
+    sim.load(toy_building)
+    assert sim.batch is not None and sim.batch.n == 1
+    robot, lidar, robot_map = _by_hand(sim.world, config)
+    rng, rng_hand = np.random.default_rng(5), np.random.default_rng(5)
+    sim.reset(rng)
+    robot.reset(sim.world.start_pose)
+    scan = lidar.scan(sim.world.raycaster, robot.pose, rng_hand)
+    robot_map.update(scan)
+    view, view_hand = np.empty((64, 64), np.uint8), np.empty((64, 64), np.uint8)
+    commands = [(0.6, 0.0)] * 30 + [(0.3, 1.0)] * 15 + [(0.6, -0.4)] * 40 + [(-0.2, 0.0)] * 5
+    for v, w in commands:
+        outcome = sim.step(v, w, rng)
+        motion = robot.step(v, w)
+        scan = lidar.scan(sim.world.raycaster, robot.pose, rng_hand)
+        new_m2 = robot_map.update(scan)
+        assert sim.robot.pose == robot.pose and sim.robot.velocity == robot.velocity
+        assert (outcome.collided, outcome.new_area_m2) == (motion.collided, new_m2)
+        assert np.array_equal(sim.scan.ranges_m, scan.ranges_m)
+        assert np.array_equal(sim.scan.true.range_m, scan.true.range_m)
+        assert np.array_equal(sim.scan.returned, scan.returned)
+        assert np.array_equal(sim.map.grid, robot_map.grid) and sim.map.coverage == robot_map.coverage
+        sim.local_view(view)
+        assert np.array_equal(view, robot_map.local_view(robot.pose, out=view_hand))
+    assert sim.collisions > 0  # the drive met a wall: contacts were compared too
+    assert rng.random() == rng_hand.random()  # the same noise draws, in the same order
+
+
+def test_batch_of_one__robot_and_map_are_views_of_the_batch(hall):
+    sim = _sim(hall, victims=False)
+    sim.reset(np.random.default_rng(0))
+    sim.robot.reset((3.0, 2.0, 0.5))  # the robot's state is the batch's row
+    assert tuple(sim.batch.phys[0, :3]) == (3.0, 2.0, 0.5)
+    sim.step(0.5, 0.0, np.random.default_rng(0))
+    assert np.shares_memory(sim.map.grid, sim.batch.grids[0])
+    reachable = np.count_nonzero(sim.world.reachable)
+    assert sim.map.coverage == sim.batch.observed[0] / reachable > 0
+
+
+def test_batch_of_one__a_copy_steps_on_its_own_batch(hall):
+    sim = _sim(hall, victims=False)
+    rng = np.random.default_rng(0)
+    sim.reset(rng)
+    for copied in (copy.deepcopy(sim), pickle.loads(pickle.dumps(sim))):
+        before = sim.map.coverage
+        copied.step(0.6, 1.0, np.random.default_rng(1))
+        copied.step(0.6, 1.0, np.random.default_rng(1))
+        assert copied.map.coverage > before == sim.map.coverage  # the original did not move
+        assert np.shares_memory(copied.map.grid, copied.batch.grids[0])
+        assert copied.robot.pose == tuple(copied.batch.phys[0, :3]) != sim.robot.pose
+
+
+def test_pymunk_physics__runs_the_parts_one_after_the_other(hall):
+    config = EnvConfig().replace(robot=replace(EnvConfig().robot, physics="pymunk"))
+    sim = Simulation(config)
+    sim.load(hall)
+    sim.reset(np.random.default_rng(0))
+    assert sim.batch is None
+    outcome = sim.step(0.6, 0.0, np.random.default_rng(0))
+    assert outcome.new_area_m2 >= 0 and sim.map.coverage > 0
+    view = np.empty((64, 64), np.uint8)
+    sim.local_view(view)
+    assert np.array_equal(view, sim.map.local_view(sim.robot.pose))

@@ -21,11 +21,17 @@ import math
 
 import numpy as np
 from gymnasium import spaces
+from numba import njit
 
 from realistic_indoor.envs.observations import POSE_LIMIT_M
 from realistic_indoor.sim.disc_physics import wrap_angle
 
-__all__ = ["base_space", "observe_base", "observe_teammates", "state_space", "teammates_space"]
+__all__ = [
+    "base_space",
+    "observe_team",
+    "state_space",
+    "teammates_space",
+]
 
 
 def teammates_space(n_robots: int) -> spaces.Box:
@@ -43,44 +49,50 @@ def base_space() -> spaces.Box:
     return spaces.Box(low, high, (4,), np.float32)
 
 
-def _relative(poses: np.ndarray, xy: np.ndarray) -> np.ndarray:
-    """``(n, k, 2)`` the points ``xy`` (``(k, 2)`` m) in each robot's frame (x ahead, y left), clipped."""
-    c, s = np.cos(poses[:, 2])[:, None], np.sin(poses[:, 2])[:, None]
-    dx = xy[None, :, 0] - poses[:, None, 0]
-    dy = xy[None, :, 1] - poses[:, None, 1]
-    out = np.stack([c * dx + s * dy, c * dy - s * dx], axis=-1)
-    return np.clip(out, -POSE_LIMIT_M, POSE_LIMIT_M)
-
-
-def observe_teammates(poses: np.ndarray, links: np.ndarray, components: np.ndarray) -> np.ndarray:
-    """``(n, n - 1, 5)`` float32: each robot's ``teammates`` observation.
+def observe_team(
+    poses: np.ndarray, base_xy: tuple[float, float], links: np.ndarray, components: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Each robot's ``teammates`` and ``base`` observations, in one compiled call.
 
     Args:
         poses: ``(n, 3)`` robot poses ``(x m, y m, heading rad)``.
+        base_xy: The base station's position (m).
         links: ``(n + 1, n + 1)`` bool direct links (robots, then the base).
         components: ``(n + 1,)`` component of each node in the link graph.
+
+    Returns:
+        ``(teammates, base)``: ``(n, n - 1, 5)`` and ``(n, 4)`` float32, as the module describes.
     """
-    n = len(poses)
-    rows = np.zeros((n, n, 5))
-    robots = components[:n]
-    known = robots[:, None] == robots[None, :]
-    rows[..., 0] = links[:n, :n]
-    rows[..., 1] = known
-    rows[..., 2:4] = _relative(poses, poses[:, :2])
-    rows[..., 4] = wrap_angle(poses[None, :, 2] - poses[:, None, 2])
-    rows[~known, 2:] = 0.0
-    others = ~np.eye(n, dtype=bool)
-    return rows[others].reshape(n, n - 1, 5).astype(np.float32)
+    return _team_view(poses, links, components, float(base_xy[0]), float(base_xy[1]), POSE_LIMIT_M)
 
 
-def observe_base(poses: np.ndarray, base_xy: tuple[float, float], links: np.ndarray, components: np.ndarray):
-    """``(n, 4)`` float32: each robot's ``base`` observation (the base is the last node)."""
-    n = len(poses)
-    out = np.zeros((n, 4), dtype=np.float32)
-    out[:, 0] = links[:n, n]
-    out[:, 1] = components[:n] == components[n]
-    out[:, 2:] = _relative(poses, np.array([base_xy], dtype=float))[:, 0]
-    return out
+@njit(cache=True, nogil=True)
+def _team_view(poses, links, components, base_x, base_y, limit):  # pragma: no cover - compiled
+    """Each robot's ``teammates`` and ``base`` rows: other nodes in its frame, clipped to ``limit`` (m)."""
+    n = poses.shape[0]
+    mates = np.zeros((n, max(n - 1, 0), 5), dtype=np.float32)
+    base = np.zeros((n, 4), dtype=np.float32)
+    for i in range(n):
+        c, s = math.cos(poses[i, 2]), math.sin(poses[i, 2])
+        k = 0
+        for j in range(n):
+            if j == i:
+                continue
+            known = components[i] == components[j]
+            mates[i, k, 0] = 1.0 if links[i, j] else 0.0
+            mates[i, k, 1] = 1.0 if known else 0.0
+            if known:
+                dx, dy = poses[j, 0] - poses[i, 0], poses[j, 1] - poses[i, 1]
+                mates[i, k, 2] = min(max(c * dx + s * dy, -limit), limit)
+                mates[i, k, 3] = min(max(c * dy - s * dx, -limit), limit)
+                mates[i, k, 4] = wrap_angle(poses[j, 2] - poses[i, 2])
+            k += 1
+        base[i, 0] = 1.0 if links[i, n] else 0.0
+        base[i, 1] = 1.0 if components[i] == components[n] else 0.0
+        dx, dy = base_x - poses[i, 0], base_y - poses[i, 1]
+        base[i, 2] = min(max(c * dx + s * dy, -limit), limit)
+        base[i, 3] = min(max(c * dy - s * dx, -limit), limit)
+    return mates, base
 
 
 def state_space(size_px: int) -> spaces.Box:

@@ -22,8 +22,7 @@ from realistic_indoor.sim.lidar import beam_offsets
 from realistic_indoor.teams.config import TeamConfig
 from realistic_indoor.teams.observations import (
     base_space,
-    observe_base,
-    observe_teammates,
+    observe_team,
     state_space,
     teammates_space,
 )
@@ -262,8 +261,7 @@ class TeamParallelEnv(ParallelEnv):
             sim.batch.phys, sim.starts, self._actions.limits, sim.out.scan, self._scan_scale, sim.out.local
         )
         poses = sim.poses
-        teammates = observe_teammates(poses, sim.links, sim.components)
-        to_base = observe_base(poses, sim.base_xy, sim.links, sim.components)
+        teammates, to_base = observe_team(poses, sim.base_xy, sim.links, sim.components)
         out = {}
         for i, agent in enumerate(self.agents):
             obs = {k: v[i] for k, v in base.items()}

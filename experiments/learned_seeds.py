@@ -20,6 +20,11 @@ Full run (about 6 minutes per model not yet evaluated, on 2 cores)::
 writes ``learned_seeds.md`` and each model's results in ``learned_seeds/<model>/``; a model
 whose results are there already is not run again. ``--small`` runs the pipeline on houses in
 seconds, with whatever models are found (the tests do).
+
+``--track ppo-global-map`` asks the same of the second track, primitive-action PPO with the
+robot's whole map (``realistic-indoor train --preset global-map``): models
+``ppo_global_<kind>_seed<N>`` in ``experiments/results/ppo_global_models/``, run as ``ppo:MODEL``,
+reported in ``ppo_global_seeds.md`` and ``ppo_global_seeds/<model>/``.
 """
 
 from __future__ import annotations
@@ -27,6 +32,7 @@ from __future__ import annotations
 import argparse
 import re
 import sys
+from dataclasses import dataclass, field
 from pathlib import Path
 from statistics import fmean
 from typing import Any
@@ -34,16 +40,62 @@ from typing import Any
 from learned_explorer import GENERATED, REAL, Setup, env_sets
 
 ROOT = Path(__file__).resolve().parents[1]
-RUNS = ROOT / "runs" / "learned_seeds"
-MODELS = ROOT / "experiments" / "results" / "learned_explorer_models"
 BASELINES = ROOT / "experiments" / "results" / "learned_explorer" / "results.json"
-COMMITTED = {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"}
-"""Models kept elsewhere than the models folder: the realistic seed-0 model is the package's own."""
-
 CLASSICAL = ("frontier", "utility", "structure")
 KINDS = ("realistic", "random")
 METRIC = "coverage_auc"
-NAME = re.compile(r"^learned_(realistic|random)_seed(\d+)$")
+
+
+@dataclass(frozen=True)
+class Track:
+    """A kind of trained explorer the study compares across seeds and training maps.
+
+    Attributes:
+        prefix: Model names are ``<prefix>_<kind>_seed<N>``.
+        agent: The agent name a model runs as: ``<agent>:<model.zip>``.
+        models: The folder of the models.
+        report: Name of the report (``<report>.md``) and of the folder of results per model.
+        title: The report's title.
+        label: What the report calls the explorer in the targets' lines.
+        committed: Models kept elsewhere than ``models``, by name.
+    """
+
+    prefix: str
+    agent: str
+    models: Path
+    report: str
+    title: str
+    label: str
+    committed: dict[str, Path] = field(default_factory=dict)
+
+    @property
+    def name_pattern(self) -> re.Pattern:
+        """``<prefix>_<kind>_seed<N>``, kind and seed as groups."""
+        return re.compile(rf"^{re.escape(self.prefix)}_(realistic|random)_seed(\d+)$")
+
+
+TRACKS = {
+    "learned": Track(
+        "learned",
+        "learned",
+        ROOT / "experiments" / "results" / "learned_explorer_models",
+        "learned_seeds",
+        "The learned explorer across training seeds: realistic-trained and random-trained",
+        "learned",
+        # the realistic seed-0 model is the package's own
+        {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+    ),
+    "ppo-global-map": Track(
+        "ppo_global",
+        "ppo",
+        ROOT / "experiments" / "results" / "ppo_global_models",
+        "ppo_global_seeds",
+        "Primitive-action PPO with the global map: realistic-trained and random-trained",
+        "PPO (global map)",
+    ),
+}
+"""The study's tracks: the learned explorer, and primitive-action PPO given the global map."""
+NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (
     ("offices", "frontier", 0.01, True),
@@ -66,7 +118,12 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         help="output folder (default runs/learned_seeds; with --small a new temporary one); "
         "--out experiments/results regenerates the committed results",
     )
-    p.add_argument("--models", default=str(MODELS), help="folder of learned_<kind>_seed<N>.zip models")
+    p.add_argument(
+        "--track", choices=sorted(TRACKS), default="learned", help="which explorer (default learned)"
+    )
+    p.add_argument(
+        "--models", default=None, help="folder of <prefix>_<kind>_seed<N>.zip models (default: the track's)"
+    )
     p.add_argument(
         "--baselines",
         default=str(BASELINES),
@@ -83,12 +140,17 @@ def main(argv: list[str] | None = None) -> int:
     from realistic_indoor.evaluation import make_tasks, read_results, run_tasks, write_results
 
     args = parse_args(argv)
-    out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="learned_seeds")
+    track = TRACKS[args.track]
+    runs = ROOT / "runs" / track.report
+    out = run_folder(args.out, runs, small=args.small, report_only=args.report_only, name=track.report)
     baselines, base_meta = ([], {}) if args.small else read_results(args.baselines)
-    models = find_models(Path(args.models))
+    folder = Path(args.models) if args.models else track.models
+    models = find_models(folder, track)
     if not models:
+        preset = "learned" if track.agent == "learned" else "global-map"
         raise ConfigError(
-            f"no learned_<kind>_seed<N>.zip models in {args.models}; train them with realistic-indoor train --preset learned"
+            f"no {track.prefix}_<kind>_seed<N>.zip models in {folder}; "
+            f"train them with realistic-indoor train --preset {preset}"
         )
     episodes, sets, env_kwargs = (
         (2, ("houses",), {"max_steps": 60}) if args.small else (10, tuple(GENERATED), {})
@@ -100,14 +162,14 @@ def main(argv: list[str] | None = None) -> int:
         results += run_tasks(tasks, workers=args.workers or 1)
     commit = checkout_commit(ROOT)
     for name, path in models.items():
-        folder = out / "learned_seeds" / name
+        folder = out / track.report / name
         if (folder / "results.json").is_file():
             mine, _ = read_results(folder / "results.json")
         else:
             if args.report_only:
                 continue
             print(f"evaluating {name} ({path})", flush=True)
-            agent = f"learned:{path}"
+            agent = f"{track.agent}:{path}"
             tasks = make_tasks([agent], generated, episodes, seed=1000)
             if real:
                 tasks += make_tasks([agent], real, 1, seed=1000)
@@ -126,21 +188,23 @@ def main(argv: list[str] | None = None) -> int:
         "episodes": episodes,
         "seed": 1000,
         "sets": [*sets, *(REAL if real else ())],
+        "track": args.track,
     }
-    return write_report(out, "learned_seeds", analyse, results, meta)
+    return write_report(out, track.report, analyse, results, meta)
 
 
-def find_models(folder: Path) -> dict[str, Path]:
-    """The models of the study, by name (``learned_<kind>_seed<N>``), realistic first, then by seed."""
-    found = {p.stem: p for p in folder.glob("learned_*_seed*.zip") if NAME.match(p.stem)}
-    for name, path in COMMITTED.items():
+def find_models(folder: Path, track: Track = TRACKS["learned"]) -> dict[str, Path]:
+    """The models of the study, by name (``<prefix>_<kind>_seed<N>``), realistic first, then by seed."""
+    pattern = track.name_pattern
+    found = {p.stem: p for p in folder.glob(f"{track.prefix}_*_seed*.zip") if pattern.match(p.stem)}
+    for name, path in track.committed.items():
         if name not in found and (folder / f"{name}.json").is_file() and path.is_file():
             found[name] = path
-    return dict(sorted(found.items(), key=lambda item: _kind_seed(item[0])))
+    return dict(sorted(found.items(), key=lambda item: _kind_seed(item[0], pattern)))
 
 
-def _kind_seed(name: str) -> tuple[int, int]:
-    kind, seed = NAME.match(name).groups()
+def _kind_seed(name: str, pattern: re.Pattern = NAME) -> tuple[int, int]:
+    kind, seed = pattern.match(name).groups()
     return KINDS.index(kind), int(seed)
 
 
@@ -153,12 +217,14 @@ def _relative(path: Path) -> str:
 
 def analyse(results: list, meta: dict[str, Any]) -> str:
     """The report: per model and per kind, differences from the classical explorers; realistic minus random."""
+    track = TRACKS[meta.get("track", "learned")]
+    pattern = track.name_pattern
     values: dict[tuple[str, str], dict[tuple[str, int], float]] = {}
     for r in results:
         values.setdefault((r.group, r.agent), {})[(r.env, r.seed)] = float(getattr(r, METRIC))
     sets = [s for s in meta["sets"] if any(g == s for g, _ in values)]
-    models = sorted({a for _, a in values if NAME.match(a)}, key=_kind_seed)
-    kinds = {k: [m for m in models if NAME.match(m).group(1) == k] for k in KINDS}
+    models = sorted({a for _, a in values if pattern.match(a)}, key=lambda m: _kind_seed(m, pattern))
+    kinds = {k: [m for m in models if pattern.match(m).group(1) == k] for k in KINDS}
     for kind, members in kinds.items():
         for s in sets:
             per = [values.get((s, m), {}) for m in members]
@@ -166,7 +232,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
             if keys:
                 values[(s, kind)] = {k: fmean(p[k] for p in per) for k in keys}
     lines = [
-        "# The learned explorer across training seeds: realistic-trained and random-trained",
+        f"# {track.title}",
         "",
         f"Regenerate with `{meta['command']}` (commit {meta['commit']}; classical explorers' episodes: "
         f"{meta['baselines']}).",
@@ -201,7 +267,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
         if keys:
             row = [s, str(len(keys)), f"{fmean(a[k] for k in keys):.3f}", f"{fmean(b[k] for k in keys):.3f}"]
             lines.append("| " + " | ".join([*row, _paired(a, b)]) + " |")
-    lines += ["", "## The issue's targets (realistic-trained, averaged over its seeds)", ""]
+    lines += ["", "## The learned-explorer issue's targets (realistic-trained, averaged over its seeds)", ""]
     for s, other, least, apart in TARGETS:
         mine, theirs = values.get((s, "realistic"), {}), values.get((s, other), {})
         keys = [k for k in mine if k in theirs]
@@ -211,7 +277,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
         met = d.mean >= least and (not apart or d.low > 0)
         want = f">= {least:+.3f}" + (" with the interval above 0" if apart else "")
         lines.append(
-            f"- {s}: learned minus {other} {d.mean:+.3f} [{d.low:+.3f}, {d.high:+.3f}], asked {want}: "
+            f"- {s}: {track.label} minus {other} {d.mean:+.3f} [{d.low:+.3f}, {d.high:+.3f}], asked {want}: "
             f"{'met' if met else 'not met'}"
         )
     return "\n".join(lines) + "\n"

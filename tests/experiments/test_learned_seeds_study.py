@@ -80,3 +80,25 @@ def test_small_run__the_same_model_trained_twice_differs_from_itself_by_nothing(
     report = (out / "learned_seeds.md").read_text()
     assert _row(report, "| houses | 2 |")[4] == "+0.000 [+0.000, +0.000]"
     assert "| houses | **random (1 seeds)** | 2 |" in report
+
+
+def test_ppo_track__its_own_models_agent_and_labels(tmp_path):
+    module = _load()
+    track = module.TRACKS["ppo-global-map"]
+    for name in ("ppo_global_random_seed0", "ppo_global_realistic_seed0", "learned_realistic_seed1"):
+        (tmp_path / f"{name}.zip").write_bytes(b"")
+    assert list(module.find_models(tmp_path, track)) == [
+        "ppo_global_realistic_seed0",
+        "ppo_global_random_seed0",
+    ]
+    assert track.agent == "ppo"
+    results = [
+        _r("ppo_global_realistic_seed0", "o", 1, 0.30), _r("ppo_global_realistic_seed0", "o", 2, 0.50),
+        _r("ppo_global_random_seed0", "o", 1, 0.20), _r("ppo_global_random_seed0", "o", 2, 0.20),
+        _r("frontier", "o", 1, 0.70), _r("frontier", "o", 2, 0.70),
+    ]  # fmt: skip
+    meta = {"command": "c", "commit": "x", "baselines": "b", "episodes": 2, "seed": 1000, "sets": ["offices"]}
+    report = module.analyse(results, {**meta, "track": "ppo-global-map"})
+    assert report.startswith("# Primitive-action PPO with the global map")
+    assert _row(report, "| offices | 2 |")[2:] == ["0.400", "0.200", "+0.200 [+0.100, +0.300] *"]
+    assert "- offices: PPO (global map) minus frontier -0.300 [-0.400, -0.200]" in report

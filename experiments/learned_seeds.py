@@ -228,7 +228,7 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
     for kind, members in kinds.items():
         for s in sets:
             per = [values.get((s, m), {}) for m in members]
-            keys = set.intersection(*(set(p) for p in per)) if per and all(per) else set()
+            keys = sorted(set.intersection(*(set(p) for p in per))) if per and all(per) else []
             if keys:
                 values[(s, kind)] = {k: fmean(p[k] for p in per) for k in keys}
     lines = [

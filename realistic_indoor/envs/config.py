@@ -164,7 +164,10 @@ class EnvConfig:
                 raise ConfigError(f"EnvConfig.{name} must be a {cls.__name__}, got {type(value).__name__}")
 
     def batch_refusal(self) -> tuple[str, str] | None:
-        """What of this configuration the batched simulation (vector and team envs) does not run.
+        """What of this configuration the vector and team envs' batched simulation does not run.
+
+        The single env runs every configuration: the compiled physics on a batch of one, pymunk
+        one class after the other.
 
         Returns:
             ``None`` if it runs all of it, else ``(kind, what)``: ``kind`` one of ``"physics"``

@@ -104,13 +104,16 @@ class Simulation:
 
     @property
     def nbytes(self) -> int:
-        """Memory held by the world's and the map's arrays (bytes)."""
+        """Memory held by the world's and the map's arrays (bytes); with a batch, all of its arrays.
+
+        The batch adds the robot's physics state and the walls' contact grid to the world and map.
+        """
         if self.world is None:
             return 0
         return self.batch.nbytes if self.batch is not None else self.world.nbytes + self.map.nbytes
 
     def load(self, building: Building) -> None:
-        """Make ``building`` the current world (kept if it already is)."""
+        """Make ``building`` the current world (kept if it already is), the robot at rest at its start."""
         if building is self.building:
             return
         self.world = World(building, self.config.world)
@@ -120,6 +123,7 @@ class Simulation:
             return
         c = self._constants
         self.batch.load(0, self.world, c.params[0], int(c.local[0]))
+        self.batch.place(0)
         self._views()
 
     def _views(self) -> None:
@@ -180,14 +184,24 @@ class Simulation:
         return StepOutcome(collided, new_area_m2, found)
 
     def local_view(self, out: np.ndarray) -> None:
-        """The map around the robot, heading up, into ``out`` (``(S, S)`` uint8): :meth:`RobotMap.local_view`.
+        """The map around the robot, heading up, into ``out``: :meth:`RobotMap.local_view`'s image.
 
-        With the compiled physics it is the view the latest step rendered.
+        With the compiled physics it is the view the latest step (or reset) rendered, at the pose
+        the robot had then.
+
+        Raises:
+            ConfigError: If ``out`` is not a C-contiguous ``(size_px, size_px)`` uint8 array.
         """
         if self.batch is None:
             self.map.local_view(self.robot.pose, out=out)
-        else:
-            out[...] = self._out.local[0, 0]
+            return
+        view = self._out.local[0, 0]
+        if out.shape != view.shape or out.dtype != np.uint8 or not out.flags.c_contiguous:
+            s = view.shape[0]
+            raise ConfigError(
+                f"local_view(out=...) needs a C-contiguous ({s}, {s}) uint8 array, got {out.dtype} {out.shape}"
+            )
+        out[...] = view
 
     def _sense(self, rng: np.random.Generator) -> float:
         """The pymunk robot's scan and map update, one after the other."""

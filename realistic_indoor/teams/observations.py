@@ -6,7 +6,7 @@ Each robot sees what it would see alone (:mod:`realistic_indoor.envs.observation
   ``(direct, connected, x, y, heading)``: 1 if linked to it directly, 1 if linked directly or
   through others; then, when connected, its pose in this robot's frame (``x`` m ahead, ``y`` m
   to the left, clipped to :data:`~realistic_indoor.envs.observations.POSE_LIMIT_M`; heading
-  difference in rad, ``[-pi, pi)``), zeros when not (a robot knows where a teammate is only
+  difference in rad, ``[-pi, pi]``), zeros when not (a robot knows where a teammate is only
   through its links).
 - ``base``: ``(4,)`` float32 ``(direct, connected, x, y)``: its link to the base station, and the
   base's position in its frame (known from the start: the robots start beside it).

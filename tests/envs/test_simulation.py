@@ -82,22 +82,19 @@ def _by_hand(world, config):
     return robot, Lidar(config.lidar), RobotMap(world, config.local_map)
 
 
-@pytest.mark.parametrize("noise_m", [0.0, 0.02])
-def test_batch_of_one__steps_as_the_robot_laser_and_map_composed_by_hand(toy_building, noise_m):
-    """The compiled physics runs on a batch of one; it must do exactly what the classes do."""
-    config = EnvConfig().replace(lidar=replace(EnvConfig().lidar, noise_std_m=noise_m))
-    sim = Simulation(config)
-    sim.load(toy_building)
-    assert sim.batch is not None and sim.batch.n == 1
+COMMANDS = [(0.6, 0.0)] * 30 + [(0.3, 1.0)] * 15 + [(0.6, -0.4)] * 40 + [(-0.2, 0.0)] * 5
+
+
+def _episode_by_hand(sim, config, rng, rng_hand):
+    """Reset ``sim`` and drive it; the parts composed by hand do the same: compare every step."""
     robot, lidar, robot_map = _by_hand(sim.world, config)
-    rng, rng_hand = np.random.default_rng(5), np.random.default_rng(5)
     sim.reset(rng)
     robot.reset(sim.world.start_pose)
     scan = lidar.scan(sim.world.raycaster, robot.pose, rng_hand)
     robot_map.update(scan)
+    assert np.array_equal(sim.map.grid, robot_map.grid) and sim.map.coverage == robot_map.coverage
     view, view_hand = np.empty((64, 64), np.uint8), np.empty((64, 64), np.uint8)
-    commands = [(0.6, 0.0)] * 30 + [(0.3, 1.0)] * 15 + [(0.6, -0.4)] * 40 + [(-0.2, 0.0)] * 5
-    for v, w in commands:
+    for v, w in COMMANDS:
         outcome = sim.step(v, w, rng)
         motion = robot.step(v, w)
         scan = lidar.scan(sim.world.raycaster, robot.pose, rng_hand)
@@ -110,8 +107,27 @@ def test_batch_of_one__steps_as_the_robot_laser_and_map_composed_by_hand(toy_bui
         assert np.array_equal(sim.map.grid, robot_map.grid) and sim.map.coverage == robot_map.coverage
         sim.local_view(view)
         assert np.array_equal(view, robot_map.local_view(robot.pose, out=view_hand))
-    assert sim.collisions > 0  # the drive met a wall: contacts were compared too
     assert rng.random() == rng_hand.random()  # the same noise draws, in the same order
+
+
+@pytest.mark.parametrize("noise_m", [0.0, 0.02])
+def test_batch_of_one__steps_as_the_robot_laser_and_map_composed_by_hand(toy_building, hall, noise_m):
+    """The compiled physics runs on a batch of one; it must do exactly what the classes do.
+
+    Two buildings in turn, then the second again (a reset only) and the first again: the batch's
+    arrays and the views on them follow each new building.
+    """
+    config = EnvConfig().replace(lidar=replace(EnvConfig().lidar, noise_std_m=noise_m))
+    sim = Simulation(config)
+    rng, rng_hand = np.random.default_rng(5), np.random.default_rng(5)
+    for building in (toy_building, hall, hall, toy_building):
+        new = building is not sim.building
+        sim.load(building)
+        assert sim.batch is not None and sim.batch.n == 1
+        if new:  # loading puts the robot at rest at the start, as a new robot would be
+            assert sim.robot.pose == sim.world.start_pose and sim.robot.velocity == (0.0, 0.0)
+        _episode_by_hand(sim, config, rng, rng_hand)
+    assert sim.collisions > 0  # the drive met a wall: contacts were compared too
 
 
 def test_batch_of_one__robot_and_map_are_views_of_the_batch(hall):
@@ -138,14 +154,18 @@ def test_batch_of_one__a_copy_steps_on_its_own_batch(hall):
         assert copied.robot.pose == tuple(copied.batch.phys[0, :3]) != sim.robot.pose
 
 
-def test_pymunk_physics__runs_the_parts_one_after_the_other(hall):
-    config = EnvConfig().replace(robot=replace(EnvConfig().robot, physics="pymunk"))
-    sim = Simulation(config)
-    sim.load(hall)
-    sim.reset(np.random.default_rng(0))
-    assert sim.batch is None
-    outcome = sim.step(0.6, 0.0, np.random.default_rng(0))
-    assert outcome.new_area_m2 >= 0 and sim.map.coverage > 0
-    view = np.empty((64, 64), np.uint8)
-    sim.local_view(view)
-    assert np.array_equal(view, sim.map.local_view(sim.robot.pose))
+def test_pymunk_physics__follows_the_batch_of_one_within_the_physics_tolerance(toy_building):
+    """pymunk runs the classes in turn; the compiled physics is held to it (tests/sim/test_disc_physics.py)."""
+    pymunk = Simulation(EnvConfig().replace(robot=replace(EnvConfig().robot, physics="pymunk")))
+    compiled = Simulation(EnvConfig())
+    for sim in (pymunk, compiled):
+        sim.load(toy_building)
+        sim.reset(np.random.default_rng(0))
+    assert pymunk.batch is None
+    for v, w in COMMANDS[:60]:
+        pymunk.step(v, w, np.random.default_rng(0))
+        compiled.step(v, w, np.random.default_rng(0))
+    assert np.hypot(*np.subtract(pymunk.robot.pose[:2], compiled.robot.pose[:2])) < 0.05
+    assert pymunk.map.coverage == pytest.approx(compiled.map.coverage, abs=0.02) and pymunk.map.coverage > 0.1
+    with pytest.raises(ConfigError, match="C-contiguous"):
+        compiled.local_view(np.empty((32, 32), np.uint8))

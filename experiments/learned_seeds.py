@@ -57,6 +57,7 @@ class Track:
         report: Name of the report (``<report>.md``) and of the folder of results per model.
         title: The report's title.
         label: What the report calls the explorer in the targets' lines.
+        preset: The ``realistic-indoor train --preset`` that trains its models.
         committed: Models kept elsewhere than ``models``, by name.
     """
 
@@ -66,6 +67,7 @@ class Track:
     report: str
     title: str
     label: str
+    preset: str
     committed: dict[str, Path] = field(default_factory=dict)
 
     @property
@@ -82,6 +84,7 @@ TRACKS = {
         "learned_seeds",
         "The learned explorer across training seeds: realistic-trained and random-trained",
         "learned",
+        "learned",
         # the realistic seed-0 model is the package's own
         {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
     ),
@@ -92,6 +95,7 @@ TRACKS = {
         "ppo_global_seeds",
         "Primitive-action PPO with the global map: realistic-trained and random-trained",
         "PPO (global map)",
+        "global-map",
     ),
 }
 """The study's tracks: the learned explorer, and primitive-action PPO given the global map."""
@@ -147,10 +151,9 @@ def main(argv: list[str] | None = None) -> int:
     folder = Path(args.models) if args.models else track.models
     models = find_models(folder, track)
     if not models:
-        preset = "learned" if track.agent == "learned" else "global-map"
         raise ConfigError(
             f"no {track.prefix}_<kind>_seed<N>.zip models in {folder}; "
-            f"train them with realistic-indoor train --preset {preset}"
+            f"train them with realistic-indoor train --preset {track.preset}"
         )
     episodes, sets, env_kwargs = (
         (2, ("houses",), {"max_steps": 60}) if args.small else (10, tuple(GENERATED), {})

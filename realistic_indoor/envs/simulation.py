@@ -18,7 +18,7 @@ from realistic_indoor.errors import ConfigError
 from realistic_indoor.sim.batch import RESET, STEP, Batch, StepOutputs, step_batch_serial, step_constants
 from realistic_indoor.sim.disc_physics import DiscRobot, odometry, robot_in_world
 from realistic_indoor.sim.lidar import Lidar, Scan
-from realistic_indoor.sim.mapping import RobotMap
+from realistic_indoor.sim.mapping import RobotMap, require_view_out
 from realistic_indoor.sim.raycast import RayHits
 from realistic_indoor.sim.victims import Victims, place_victims
 from realistic_indoor.sim.world import World
@@ -195,13 +195,8 @@ class Simulation:
         if self.batch is None:
             self.map.local_view(self.robot.pose, out=out)
             return
-        view = self._out.local[0, 0]
-        if out.shape != view.shape or out.dtype != np.uint8 or not out.flags.c_contiguous:
-            s = view.shape[0]
-            raise ConfigError(
-                f"local_view(out=...) needs a C-contiguous ({s}, {s}) uint8 array, got {out.dtype} {out.shape}"
-            )
-        out[...] = view
+        require_view_out(out, self.config.local_map.size_px)
+        out[...] = self._out.local[0, 0]
 
     def _sense(self, rng: np.random.Generator) -> float:
         """The pymunk robot's scan and map update, one after the other."""

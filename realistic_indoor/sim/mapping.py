@@ -51,6 +51,7 @@ __all__ = [
     "beam_table",
     "coverage_share",
     "coverage_share_compiled",
+    "require_view_out",
 ]
 
 PIXEL_OCCUPIED, PIXEL_UNKNOWN, PIXEL_FREE = 0, 128, 255
@@ -282,11 +283,8 @@ class RobotMap:
         s = self.local.size_px
         if out is None:
             out = np.empty((s, s), dtype=np.uint8)
-        elif out.shape != (s, s) or out.dtype != np.uint8 or not out.flags.c_contiguous:
-            raise ConfigError(
-                f"local_view(out=...) needs a C-contiguous ({s}, {s}) uint8 array, "
-                f"got {out.dtype} {out.shape}"
-            )
+        else:
+            require_view_out(out, s)
         x, y, theta = pose
         cell = self._res * self._pool
         render_local(
@@ -446,6 +444,19 @@ class FreeSpaceMarker:
                 1.0 / res,
                 self._closed,
             )
+        )
+
+
+def require_view_out(out: np.ndarray, size_px: int) -> None:
+    """Refuse a local view's ``out`` that is not a C-contiguous ``(size_px, size_px)`` uint8 array.
+
+    Raises:
+        ConfigError: Naming the array needed and the one given.
+    """
+    if out.shape != (size_px, size_px) or out.dtype != np.uint8 or not out.flags.c_contiguous:
+        raise ConfigError(
+            f"local_view(out=...) needs a C-contiguous ({size_px}, {size_px}) uint8 array, "
+            f"got {out.dtype} {out.shape}"
         )
 
 

@@ -159,7 +159,7 @@ class ExploreEnv(gym.Env):
     | `action_type`     | `str`                | continuous  | `"continuous"`, `"discrete"`, `"frontier"` or `"waypoint"` |
     | `macro`           | `MacroConfig`        | 16 candidates | candidate goals per decision, navigator settings (`"frontier"` only) |
     | `extra_observations` | tuple of names    | `None`      | `global_map`, `candidates`, `time_left` (default: the latter two with macro actions) |
-    | `global_map`      | `GlobalMapConfig`    | 128 px, 0.5 m | size and pixel side of the `global_map` observation |
+    | `global_map`      | `GlobalMapConfig`    | 64 px, 1 m    | size and pixel side of the `global_map` observation |
 
     ``victims`` (search only) is refused with a :class:`~realistic_indoor.errors.ConfigError`,
     as is any name that is not a field.

@@ -48,8 +48,8 @@ class GlobalMapConfig:
             64 m x 64 m.
     """
 
-    size_px: int = 128
-    resolution_m: float = 0.5
+    size_px: int = 64
+    resolution_m: float = 1.0
 
     def __post_init__(self) -> None:
         require_int("GlobalMapConfig", "size_px", self.size_px, 8, 1024)

@@ -91,8 +91,10 @@ def global_map_model(tmp_path_factory):
     from realistic_indoor.agents.rl import train_ppo
 
     path = tmp_path_factory.mktemp("ppo_global") / "global.zip"
-    keys = ppo_preset("global-map").obs_keys
-    config = ppo_preset("smoke", env_ids=("HouseExplore-v0",), obs_keys=keys)
+    preset = ppo_preset("global-map")
+    config = ppo_preset(
+        "smoke", env_ids=("HouseExplore-v0",), obs_keys=preset.obs_keys, map_encoder=preset.map_encoder
+    )
     train_ppo(config, path, log=lambda line: None)
     return path
 
@@ -102,7 +104,29 @@ def test_global_map_preset__the_policy_reads_the_whole_map_and_the_time_left(glo
 
     spaces = load_model(global_map_model).observation_space.spaces
     assert list(spaces) == sorted(["scan", "local_map", "velocity", "global_map", "time_left"])
-    assert spaces["global_map"].shape == (4, 128, 128)  # GlobalMapConfig's default
+    assert spaces["global_map"].shape == (4, 64, 64)  # GlobalMapConfig's default
+
+
+def test_global_map_preset__encodes_each_map_with_the_compact_cnn(global_map_model):
+    from realistic_indoor.agents.rl.agent import load_model
+    from realistic_indoor.agents.rl.encoders import MapEncoder
+
+    encoder = load_model(global_map_model).policy.features_extractor
+    assert isinstance(encoder, MapEncoder)
+    # scan 109 + velocity 2 + time left 1, and 128 features per map image
+    assert encoder.features_dim == 109 + 2 + 1 + 2 * 128
+    weights = {k: sum(w.numel() for w in part.parameters()) for k, part in encoder.extractors.items()}
+    # 8x8/4, 4x4/2 and 3x3/1 convolutions to 16, 32, 32 channels, then 32*4*4 -> 128, with biases
+    rest = 16 + (16 * 32 * 4 * 4 + 32) + (32 * 32 * 3 * 3 + 32) + (32 * 4 * 4 * 128 + 128)
+    assert weights["global_map"] == 4 * 16 * 8 * 8 + rest  # 4 channels in
+    assert weights["local_map"] == 1 * 16 * 8 * 8 + rest
+    assert weights["scan"] == weights["velocity"] == weights["time_left"] == 0
+
+
+def test_ppo_config__unknown_map_encoder_is_a_one_line_error():
+    with pytest.raises(ConfigError, match="map_encoder must be one of nature, compact") as err:
+        PPOConfig(map_encoder="resnet")
+    assert "\n" not in str(err.value)
 
 
 def test_evaluation_gives_a_global_map_model_its_observations(global_map_model):
@@ -137,6 +161,6 @@ def test_extra_observations_train_in_sub_processes_where_the_native_vector_env_c
     try:
         assert isinstance(venv, SubprocVecEnv)  # asked for "batched", the default
         assert venv.observation_space["time_left"].shape == (1,)
-        assert venv.reset()["global_map"].shape == (2, 4, 128, 128)
+        assert venv.reset()["global_map"].shape == (2, 4, 64, 64)
     finally:
         venv.close()

@@ -45,7 +45,8 @@ def _near(raster, points, value, reach_m):
 
 @pytest.mark.parametrize("seed", [3, 4])
 def test_global_map__shows_the_mapped_floor_and_walls_where_they_are(seed):
-    env = gym.make("OfficeExplore-v0", area_m2=600.0, extra_observations=["global_map"])
+    fine = {"size_px": 128, "resolution_m": 0.5}  # finer than the default, for a tight check
+    env = gym.make("OfficeExplore-v0", area_m2=600.0, extra_observations=["global_map"], global_map=fine)
     env.action_space.seed(seed)
     obs, _ = env.reset(seed=seed)
     for _ in range(60):
@@ -63,6 +64,17 @@ def test_global_map__shows_the_mapped_floor_and_walls_where_they_are(seed):
     assert np.array_equal(unknown, (image[0] == 0) & (image[1] == 0))
     assert image[3][64, 64] == 255  # the robot stands in the centre pixel, which it has visited
     assert env.observation_space.contains(obs)
+
+
+def test_global_map__default_is_64_pixels_of_1_m_with_the_robot_in_the_centre_pixel():
+    env = gym.make("HouseExplore-v0", extra_observations=["global_map"])
+    obs, _ = env.reset(seed=2)
+    image = obs["global_map"]
+    assert image.shape == (4, 64, 64)
+    assert image[3][32, 32] == 255  # visited: the robot's start, in the centre pixel
+    # a house (150 m2) fits in 64 m x 64 m: the mapped floor lies well inside the image
+    rows, cols = np.nonzero(image[0])
+    assert len(rows) > 4 and rows.min() > 8 and rows.max() < 56 and cols.min() > 8 and cols.max() < 56
 
 
 def test_global_map__keeps_the_start_heading_up_while_the_robot_turns():

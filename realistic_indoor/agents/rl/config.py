@@ -11,6 +11,7 @@ from realistic_indoor.errors import ConfigError
 
 __all__ = [
     "ENV_SETS",
+    "MAP_ENCODERS",
     "PPO_EVAL_PRESETS",
     "PPO_PRESETS",
     "VEC_ENVS",
@@ -24,6 +25,8 @@ REALISTIC_IDS = ("OfficeExplore-v0", "SchoolExplore-v0", "HouseExplore-v0")
 RANDOM_IDS = ("RandomExplore-v0",)
 ENV_SETS: dict[str, tuple[str, ...]] = {"realistic": REALISTIC_IDS, "random": RANDOM_IDS}
 """Named sets of training ids: ``realistic`` (offices, schools, houses) and ``random`` (the baseline)."""
+MAP_ENCODERS = ("nature", "compact")
+"""How a PPO policy encodes its map images: :attr:`PPOConfig.map_encoder`."""
 VEC_ENVS = ("batched", "subproc", "dummy")
 """How training environments run: :attr:`PPOConfig.vec_env`."""
 TRAINING_AREAS_M2: dict[str, float] = {"office": 600.0, "school": 900.0, "house": 150.0, "random": 600.0}
@@ -52,6 +55,11 @@ class PPOConfig:
             evaluation gives a model that reads them the same (the ``global-map`` preset).
             ``candidates`` needs macro actions: the learned explorer's recipe
             (:mod:`~realistic_indoor.agents.rl.learned`).
+        map_encoder: How the policy encodes each map image (``local_map``, ``global_map``):
+            ``"nature"`` (stable-baselines3's default, the Atari CNN and a 256-wide layer: 2.4 M
+            weights on the 128-pixel global map) or ``"compact"``
+            (:class:`~realistic_indoor.agents.rl.encoders.MapEncoder`: max-pooled to at most 64
+            pixels a side, a small CNN and a 128-wide layer, about 80 k weights per image).
         n_envs: Environments run in parallel.
         vec_env: ``"batched"`` (the default: the ids' native vector environments, all
             sub-environments of an id stepped by one compiled call, in this process; with
@@ -79,6 +87,7 @@ class PPOConfig:
     max_steps: int = 600
     action_type: str = "discrete"
     obs_keys: tuple[str, ...] = ("scan", "local_map", "velocity")
+    map_encoder: str = "nature"
     n_envs: int = 4
     vec_env: str = "batched"
     total_timesteps: int = 500_000
@@ -107,6 +116,10 @@ class PPOConfig:
             raise ConfigError(
                 "PPOConfig.obs_keys: 'candidates' needs macro actions; train the learned explorer "
                 "(realistic-indoor train --preset learned) to choose among candidates"
+            )
+        if self.map_encoder not in MAP_ENCODERS:
+            raise ConfigError(
+                f"PPOConfig.map_encoder must be one of {', '.join(MAP_ENCODERS)}, got {self.map_encoder!r}"
             )
         if self.vec_env not in VEC_ENVS:
             raise ConfigError(f"PPOConfig.vec_env must be one of {', '.join(VEC_ENVS)}, got {self.vec_env!r}")
@@ -150,7 +163,10 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
         "n_steps": 1024,
         "n_epochs": 10,
     },
-    "global-map": {"obs_keys": ("scan", "local_map", "velocity", "global_map", "time_left")},
+    "global-map": {
+        "obs_keys": ("scan", "local_map", "velocity", "global_map", "time_left"),
+        "map_encoder": "compact",
+    },
     "smoke": {
         "total_timesteps": 256,
         "n_envs": 2,
@@ -164,8 +180,8 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
 """Named overrides of :class:`PPOConfig`: ``default`` (about 20 minutes on 2 CPU cores),
 ``long`` (3 M steps on bigger buildings: hours; better explorers), ``global-map`` (the default
 run with the robot's whole map, ``global_map``, and the share of the step limit left,
-``time_left``, in the policy's view: primitive-action PPO with what the learned explorer's
-navigator knows), ``smoke`` (256 steps: checks the set-up in seconds, and the tests use it)."""
+``time_left``, in the policy's view, each map through the compact encoder: primitive-action PPO
+with what the learned explorer's navigator knows), ``smoke`` (256 steps: checks the set-up in seconds, and the tests use it)."""
 
 
 def ppo_preset(name: str, **changes: Any) -> PPOConfig:

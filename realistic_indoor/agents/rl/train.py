@@ -80,7 +80,7 @@ def train_ppo(
     out_path.parent.mkdir(parents=True, exist_ok=True)
     venv = make_vec_env(config)
     tracker = _progress_callback(config.total_timesteps, log, progress, log_every)
-    model = sb3.PPO("MultiInputPolicy", venv, **ppo_arguments(config))
+    model = sb3.PPO("MultiInputPolicy", venv, policy_kwargs=_policy_kwargs(config), **ppo_arguments(config))
     start = time.perf_counter()
     try:
         model.learn(total_timesteps=config.total_timesteps, callback=tracker)
@@ -113,6 +113,15 @@ def ppo_arguments(config: Any) -> dict[str, Any]:
             :class:`~realistic_indoor.agents.rl.learned.LearnedConfig`.
     """
     return {**{name: getattr(config, name) for name in PPO_ARGUMENTS}, "device": "cpu", "verbose": 0}
+
+
+def _policy_kwargs(config: Any) -> dict[str, Any] | None:
+    """``policy_kwargs`` of ``PPO`` for :attr:`PPOConfig.map_encoder` (``None``: the default encoder)."""
+    if getattr(config, "map_encoder", "nature") == "nature":
+        return None
+    from realistic_indoor.agents.rl.encoders import MapEncoder
+
+    return {"features_extractor_class": MapEncoder}
 
 
 def _progress_callback(total: int, log: Callable[[str], object], bar: bool, log_every: int) -> Any:

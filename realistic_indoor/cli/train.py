@@ -70,6 +70,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``train`` (shared with ``experiments/train_ppo.py``)."""
     from realistic_indoor.agents.rl.config import PPO_PRESETS, VEC_ENVS
     from realistic_indoor.agents.rl.learned import LEARNED_PRESETS
+    from realistic_indoor.agents.rl.teachers import TEACHERS
 
     p.add_argument(
         "--preset",
@@ -98,6 +99,12 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "this process); default: the preset's",
     )
     p.add_argument("--n-envs", type=int, help="environments trained on in parallel (default: the preset's)")
+    p.add_argument(
+        "--teacher",
+        choices=TEACHERS,
+        help="the learned presets only: the classical rule cloned before MaskablePPO (default: the preset's, "
+        "structure)",
+    )
     p.add_argument(
         "--out",
         help="model file to write (.zip; its .json goes beside it); default: a new runs/ppo_ENVS_PRESET.zip",
@@ -165,6 +172,8 @@ def _learned_config(args: argparse.Namespace, env_ids: tuple[str, ...]):
         changes["ppo_decisions"] = args.timesteps
     if args.n_envs is not None:
         changes["n_envs"] = args.n_envs
+    if args.teacher is not None:
+        changes["teacher"] = args.teacher
     return learned_preset(args.preset, **changes)
 
 
@@ -185,6 +194,10 @@ def _check_numbers(args: argparse.Namespace) -> None:
 def _config(args: argparse.Namespace, env_ids: tuple[str, ...]):
     from realistic_indoor.agents.rl.config import ppo_preset
 
+    if args.teacher is not None:
+        raise ConfigError(
+            f"--teacher is for the learned presets (a rule to clone), not {args.preset}; leave it out"
+        )
     changes = {"env_ids": env_ids, "seed": args.seed}
     if args.timesteps is not None:
         changes["total_timesteps"] = args.timesteps

@@ -11,7 +11,7 @@ import numpy as np
 
 from realistic_indoor.evaluation.tasks import EpisodeTask, make_env
 
-__all__ = ["SCALARS", "TEAM_SCALARS", "EpisodeResult", "run_episode"]
+__all__ = ["SCALARS", "TEAM_SCALARS", "EpisodeResult", "play_episode", "run_episode"]
 
 SCALARS = (
     "steps",
@@ -156,22 +156,29 @@ def run_episode(task: EpisodeTask) -> EpisodeResult:
 
     env = make_env(task.env, agent_observations(task.agent))
     try:
-        agent = make_agent(task.agent, env)
-        obs, info = env.reset(seed=task.seed)
-        agent.reset(seed=task.seed)
-        log = _Log(info)
-        thinking = 0.0
-        done = False
-        while not done:
-            t0 = time.perf_counter()
-            action = agent.act(obs, info)
-            thinking += time.perf_counter() - t0
-            obs, reward, terminated, truncated, info = env.step(action)
-            log.add(info, float(reward))
-            done = terminated or truncated
-        config = env.unwrapped.config
+        return play_episode(env, make_agent(task.agent, env), task)
     finally:
         env.close()
+
+
+def play_episode(env: Any, agent: Any, task: EpisodeTask) -> EpisodeResult:
+    """Run ``agent`` for one episode of ``env`` (seeded with ``task.seed``) and measure it.
+
+    For an agent built by hand (not by name); ``task.agent`` is only its label in the result.
+    """
+    obs, info = env.reset(seed=task.seed)
+    agent.reset(seed=task.seed)
+    log = _Log(info)
+    thinking = 0.0
+    done = False
+    while not done:
+        t0 = time.perf_counter()
+        action = agent.act(obs, info)
+        thinking += time.perf_counter() - t0
+        obs, reward, terminated, truncated, info = env.step(action)
+        log.add(info, float(reward))
+        done = terminated or truncated
+    config = env.unwrapped.config
     result = log.result(task, 1.0 / config.robot.control_hz, config.max_steps, thinking)
     result.decisions = _decisions(agent)
     return result

@@ -1,4 +1,4 @@
-"""The learned explorer: its expert rule, its agent loop, its model files and its training command.
+"""The learned explorer: its teacher rules, its agent loop, its model files and its training command.
 
 Expected values are worked out by hand (the expert rule on hand-made candidates) or come from
 the classical explorer (a policy that always chooses candidate 0 is the nearest-frontier
@@ -17,7 +17,7 @@ import pytest
 from agent_helpers import AlwaysChoose
 
 from realistic_indoor.agents import make_agent
-from realistic_indoor.agents.rl.learned import expert_choice
+from realistic_indoor.agents.rl.teachers import TEACHERS, TeacherPolicy, teacher_choice
 from realistic_indoor.envs.macro import CANDIDATE_FEATURES
 from realistic_indoor.errors import ConfigError
 
@@ -34,32 +34,71 @@ def _rows(*candidates: dict) -> tuple[np.ndarray, np.ndarray]:
     return rows.ravel(), rows[:, 0] == 1.0
 
 
-def test_expert__prefers_the_circulation_unless_a_room_is_four_times_nearer():
+def test_structure_rule__prefers_the_circulation_unless_a_room_is_four_times_nearer():
     # costs 1.0 (room), 3.0 (corridor), 3.5 (corridor): weighted 4.0, 3.0, 3.5 -> the corridor at 3.0
     flat, mask = _rows({"path_cost": 0.1, "in_room": 1}, {"path_cost": 0.3}, {"path_cost": 0.35})
-    assert expert_choice(flat, mask) == 1
+    assert teacher_choice(flat, mask, "structure") == 1
     # a room at 0.7 m (weighted 2.8) beats a corridor at 3.0 m
     flat, mask = _rows({"path_cost": 0.07, "in_room": 1}, {"path_cost": 0.3})
-    assert expert_choice(flat, mask) == 0
+    assert teacher_choice(flat, mask, "structure") == 0
     # every candidate in a room: the nearest
     flat, mask = _rows({"path_cost": 0.2, "in_room": 1}, {"path_cost": 0.5, "in_room": 1})
-    assert expert_choice(flat, mask) == 0
+    assert teacher_choice(flat, mask, "structure") == 0
 
 
-def test_expert__goes_to_a_detected_victim_first_and_never_to_a_missing_candidate():
+def test_teachers__utility_trades_a_long_frontier_against_three_times_its_cost():
+    # 3 * 1.0 - 0.5 = 2.5 (a short frontier at 10 m) against 3 * 1.5 - 2.5 = 2.0 (25 m long at 15 m)
+    flat, mask = _rows({"path_cost": 1.0, "size": 0.5}, {"path_cost": 1.5, "size": 2.5})
+    assert teacher_choice(flat, mask, "utility") == 1
+    assert teacher_choice(flat, mask, "frontier") == 0  # the nearer
+    # structure-utility: the same long frontier in a room costs 3 * 1.5 * 2 - 2.5 = 6.5 > 2.5
+    flat, mask = _rows({"path_cost": 1.0, "size": 0.5}, {"path_cost": 1.5, "size": 2.5, "in_room": 1})
+    assert teacher_choice(flat, mask, "utility") == 1
+    assert teacher_choice(flat, mask, "structure-utility") == 0
+
+
+def test_teachers__are_the_classical_explorers_rules():
+    from realistic_indoor.agents.structure import StructureConfig
+    from realistic_indoor.agents.utility import UtilityConfig
+
+    assert TEACHERS["structure"].room_factor == StructureConfig().room_factor
+    utility = UtilityConfig()
+    assert utility.gain == "length"  # the rule's gain is the frontier's length
+    assert (
+        TEACHERS["utility"].cost_weight / TEACHERS["utility"].length_weight
+        == utility.cost_weight / utility.gain_weight
+    )
+
+
+def test_teachers__an_unknown_rule_is_a_one_line_config_error():
+    flat, mask = _rows({"path_cost": 0.1})
+    for call in (lambda: teacher_choice(flat, mask, "oracle"), lambda: TeacherPolicy("oracle")):
+        with pytest.raises(ConfigError, match="unknown teacher 'oracle'; rules: frontier, structure") as err:
+            call()
+        assert "\n" not in str(err.value)
+    from realistic_indoor.agents.rl.learned import LearnedConfig
+
+    with pytest.raises(ConfigError, match=r"LearnedConfig\.teacher must be one of"):
+        LearnedConfig(teacher="oracle")
+
+
+def test_teachers__go_to_a_detected_victim_first_and_never_to_a_missing_candidate():
     flat, mask = _rows({"path_cost": 0.9, "victim": 1}, {"path_cost": 0.1})
-    assert expert_choice(flat, mask) == 0
+    assert teacher_choice(flat, mask, "structure") == 0
     flat, mask = _rows({"path_cost": 0.5, "in_room": 1}, {"path_cost": 0.4, "in_room": 1})
-    assert expert_choice(flat, mask) == 1  # rows 2 and 3 are zeros (cost 0) but do not exist
+    assert teacher_choice(flat, mask, "structure") == 1  # rows 2 and 3 are zeros (cost 0) but do not exist
 
 
 @pytest.mark.parametrize("env_id", ["OfficeExplore-v0", "HouseSearch-v0"])
-def test_learned_agent__choosing_0_drives_as_the_nearest_frontier_explorer(env_id):
+@pytest.mark.parametrize(
+    "policy", [AlwaysChoose, lambda: TeacherPolicy("frontier")], ids=["always-0", "frontier-rule"]
+)
+def test_learned_agent__choosing_0_drives_as_the_nearest_frontier_explorer(env_id, policy):
     kwargs = {"area_m2": 600.0} if env_id.startswith("Office") else {}
     runs = {}
     for name in ("frontier", "learned"):
         env = gym.make(env_id, **kwargs)
-        options = {"model": AlwaysChoose()} if name == "learned" else {}
+        options = {"model": policy()} if name == "learned" else {}
         agent = make_agent(name, env, **options)
         obs, info = env.reset(seed=5)
         agent.reset()
@@ -149,6 +188,8 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
             "train",
             "--preset",
             "learned-smoke",
+            "--teacher",
+            "utility",
             "--out",
             str(out),
             "--eval-episodes",
@@ -164,6 +205,7 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
     meta = json.loads(out.with_suffix(".json").read_text())
     assert meta["decisions"] >= 128 and meta["primitive_steps"] > meta["decisions"]
     assert meta["behaviour_cloning"]["decisions"] >= 64
+    assert meta["config"]["teacher"] == "utility"
     for key in ("decisions_per_s", "steps_per_s", "collect_share", "machine", "seconds"):
         assert key in meta
     agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))

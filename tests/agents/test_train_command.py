@@ -86,6 +86,7 @@ def test_train__bad_out_is_refused_before_training(tmp_path, monkeypatch, capsys
         (["--seed", "-3"], "--seed must be an integer >= 0"),
         (["--no-train", "--out", "missing.zip"], "--no-train evaluates the model at --out"),
         (["--eval-out", "file.txt"], "--eval-out file.txt: file.txt is a file"),
+        (["--teacher", "utility"], "--teacher is for the learned presets (a rule to clone), not smoke"),
     ],
 )
 def test_train__bad_options_are_one_line_errors(tmp_path, monkeypatch, capsys, no_training, args, message):

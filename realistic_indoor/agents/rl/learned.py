@@ -8,9 +8,10 @@ evaluation's sizes and step limits (the generators' default areas, the ids' own 
 
 The recipe, :func:`train_learned`:
 
-1. **Behaviour cloning** from the structure-aware explorer's rule, which the candidates'
-   features express exactly (:func:`expert_choice`: the smallest path cost, a frontier in a room
-   counting 4 times its cost; a detected victim first): decisions are collected with that rule
+1. **Behaviour cloning** from a classical explorer's rule, which the candidates' features
+   express exactly (:attr:`LearnedConfig.teacher`, by default the structure-aware explorer's: the
+   smallest path cost, a frontier in a room counting 4 times its cost; a detected victim first;
+   :mod:`~realistic_indoor.agents.rl.teachers`): decisions are collected with that rule
    choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to its choices
    (cross-entropy) and the critic to the discounted returns that followed.
 2. **MaskablePPO** from there, for the rest of the budget.
@@ -33,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.agents.rl.config import REALISTIC_IDS
+from realistic_indoor.agents.rl.teachers import TEACHERS
 from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path, write_text
@@ -42,7 +44,6 @@ __all__ = [
     "LEARNED_IDS",
     "LEARNED_PRESETS",
     "LearnedConfig",
-    "expert_choice",
     "learned_preset",
     "make_learned_env",
     "train_learned",
@@ -61,7 +62,8 @@ class LearnedConfig:
         env_ids: Registered ids trained on, in turn (their default buildings and step limits).
         n_candidates: Candidate goals per decision (K).
         n_envs: Environments run in parallel (sub-processes when more than one).
-        bc_decisions: Decisions of the expert rule collected for behaviour cloning (0: none).
+        teacher: The rule cloned (a key of :data:`~realistic_indoor.agents.rl.teachers.TEACHERS`).
+        bc_decisions: Decisions of the teacher's rule collected for behaviour cloning (0: none).
         bc_epochs: Passes of behaviour cloning over them.
         ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
         seed: Seed of the policy and of the environments' episodes (``seed + i`` for the
@@ -83,6 +85,7 @@ class LearnedConfig:
     env_ids: tuple[str, ...] = LEARNED_IDS
     n_candidates: int = 16
     n_envs: int = 2
+    teacher: str = "structure"
     bc_decisions: int = 20_000
     bc_epochs: int = 30
     ppo_decisions: int = 40_000
@@ -117,6 +120,10 @@ class LearnedConfig:
             "torch_threads",
         ):
             require_int("LearnedConfig", name, getattr(self, name), 1)
+        if self.teacher not in TEACHERS:
+            raise ConfigError(
+                f"LearnedConfig.teacher must be one of {', '.join(TEACHERS)}, got {self.teacher!r}"
+            )
         for name in ("bc_decisions", "ppo_decisions", "seed"):
             require_int("LearnedConfig", name, getattr(self, name), 0)
         for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):
@@ -161,30 +168,6 @@ def learned_preset(name: str, **changes: Any) -> LearnedConfig:
     if name not in LEARNED_PRESETS:
         raise ConfigError(f"unknown learned preset {name!r}; presets: {', '.join(LEARNED_PRESETS)}")
     return LearnedConfig(**{**LEARNED_PRESETS[name], **changes})
-
-
-def expert_choice(candidates: np.ndarray, mask: np.ndarray) -> int:
-    """The structure explorer's rule on a decision's candidates: the action it would take.
-
-    A detected victim (always candidate 0 when there is one) first; otherwise the candidate with
-    the smallest path cost, a frontier off the corridors and halls counting the structure
-    explorer's ``room_factor`` (4) times its cost, ties to the nearer. Among the K candidates only: a goal of
-    the structure explorer farther than the K-th nearest frontier is not offered.
-
-    Args:
-        candidates: The ``candidates`` observation (flat, ``K * F``).
-        mask: ``(K,)`` bool, the candidates that exist.
-    """
-    from realistic_indoor.agents.structure import StructureConfig
-    from realistic_indoor.envs.macro import CANDIDATE_FEATURES
-
-    room_factor = StructureConfig().room_factor
-    rows = np.asarray(candidates, dtype=float).reshape(len(mask), len(CANDIDATE_FEATURES))
-    if rows[0, CANDIDATE_FEATURES.index("victim")] > 0.5:
-        return 0
-    cost = rows[:, CANDIDATE_FEATURES.index("path_cost")]
-    factor = np.where(rows[:, CANDIDATE_FEATURES.index("in_room")] > 0.5, room_factor, 1.0)
-    return int(np.argmin(np.where(mask, cost * factor, np.inf)))
 
 
 class LearnedEnvFactory:
@@ -335,10 +318,11 @@ def _vec_env(config: LearnedConfig, seed: int) -> Any:
 
 
 def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Callable[[str], object]) -> dict:
-    """Collect the expert rule's decisions, fit the policy to them and the critic to their returns."""
+    """Collect the teacher's decisions, fit the policy to them and the critic to their returns."""
     import torch
     from sb3_contrib.common.maskable.utils import get_action_masks
 
+    rule = TEACHERS[config.teacher]
     obs = venv.reset()
     n_env = venv.num_envs
     store: dict[str, list[np.ndarray]] = {k: [] for k in obs}
@@ -346,7 +330,7 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
     t0 = time.perf_counter()
     while len(actions) * n_env < config.bc_decisions:
         mask = get_action_masks(venv)
-        act = np.array([expert_choice(obs["candidates"][i], mask[i]) for i in range(n_env)])
+        act = np.array([rule.choose(obs["candidates"][i], mask[i]) for i in range(n_env)])
         for k in obs:
             store[k].append(obs[k].copy())
         actions.append(act)

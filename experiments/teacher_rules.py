@@ -1,0 +1,193 @@
+"""Which rule should the learned explorer clone? The teacher rules on a block of tuning seeds.
+
+Each rule of :data:`realistic_indoor.agents.rl.teachers.TEACHERS` drives the learned explorer's
+agent in place of a trained policy: the same candidate goals (the K = 16 nearest frontiers), the
+same decisions and the same navigator; only the choice differs. They run on generated offices,
+schools and houses at their default sizes and step limits, seeds 900-909: a tuning block, never
+evaluated on (the studies use seeds from 1000) and not the training episodes (those come from
+the random streams of seeds 0 and 1). The ``frontier`` rule drives exactly as the
+nearest-frontier explorer.
+
+The report gives each rule's mean coverage AUC per set and its paired difference (same building
+and start) from the ``frontier`` and ``structure`` rules, with 95% bootstrap intervals.
+
+Full run (about 8 minutes per rule on 2 idle cores)::
+
+    .venv/bin/python experiments/teacher_rules.py --out experiments/results
+
+writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
+results are there already is not run again. ``--small`` runs the pipeline on houses in seconds
+(the tests do).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from dataclasses import dataclass, field
+from multiprocessing import get_context
+from pathlib import Path
+from statistics import fmean
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[1]
+RUNS = ROOT / "runs" / "teacher_rules"
+SETS = {"offices": "OfficeExplore-v0", "schools": "SchoolExplore-v0", "houses": "HouseExplore-v0"}
+METRIC = "coverage_auc"
+REFERENCES = ("frontier", "structure")
+
+
+@dataclass(frozen=True)
+class Setup:
+    """Size of a run.
+
+    Attributes:
+        seed: First tuning seed.
+        episodes: Seeds per set.
+        sets: Labels of :data:`SETS` run.
+        env_kwargs: More ``gym.make`` keywords.
+        workers: Processes.
+    """
+
+    seed: int = 900
+    episodes: int = 10
+    sets: tuple[str, ...] = tuple(SETS)
+    env_kwargs: dict[str, Any] = field(default_factory=dict)
+    workers: int = 2
+
+
+FULL = Setup()
+SMALL = Setup(episodes=2, sets=("houses",), env_kwargs={"max_steps": 60}, workers=1)
+
+
+def parse_args(argv: list[str] | None) -> argparse.Namespace:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--small", action="store_true", help="houses, short episodes: seconds, for tests")
+    p.add_argument("--out", default=None, help="output folder (default runs/teacher_rules)")
+    p.add_argument("--rules", default=None, help="comma-separated rules (default: every rule)")
+    p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
+    p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
+    return p.parse_args(argv)
+
+
+def main(argv: list[str] | None = None) -> int:
+    from realistic_indoor.agents.rl.teachers import TEACHERS
+    from realistic_indoor.cli import checkout_commit, run_folder, script_command
+    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.evaluation import read_results, write_results
+    from realistic_indoor.files import write_text
+
+    args = parse_args(argv)
+    setup = SMALL if args.small else FULL
+    out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="teacher_rules")
+    rules = args.rules.split(",") if args.rules else list(TEACHERS)
+    unknown = [r for r in rules if r not in TEACHERS]
+    if unknown:
+        raise ConfigError(f"--rules: unknown {unknown}; rules: {', '.join(TEACHERS)}")
+    results: list = []
+    for rule in (*REFERENCES, *(r for r in rules if r not in REFERENCES)):
+        folder = out / "teacher_rules" / rule
+        if (folder / "results.json").is_file():
+            results += read_results(folder / "results.json")[0]
+            continue
+        if args.report_only:
+            continue
+        print(f"running the {rule} rule", flush=True)
+        ran = run_rule(rule, setup, args.workers or setup.workers)
+        meta = {
+            "command": script_command("experiments/teacher_rules.py", argv),
+            "commit": checkout_commit(ROOT),
+            "rule": rule,
+            "seeds": [setup.seed, setup.seed + setup.episodes - 1],
+            "sets": list(setup.sets),
+        }
+        write_results(ran, folder, meta)
+        results += ran
+    report = analyse(results)
+    write_text(out / "teacher_rules.md", report)
+    print(report)
+    return 0
+
+
+def run_rule(rule: str, setup: Setup, workers: int) -> list:
+    """Every episode of ``rule``, in a stable order (set, seed)."""
+    from realistic_indoor.evaluation import EnvSpec, EpisodeTask
+
+    tasks = [
+        EpisodeTask(
+            f"rule:{rule}", EnvSpec(SETS[label], kwargs=dict(setup.env_kwargs), label=label, group=label), s
+        )
+        for label in setup.sets
+        for s in range(setup.seed, setup.seed + setup.episodes)
+    ]
+    if workers <= 1:
+        return [_episode(t) for t in tasks]
+    with get_context("spawn").Pool(workers) as pool:
+        return pool.map(_episode, tasks, chunksize=1)
+
+
+def _episode(task: Any) -> Any:
+    """One episode of the rule named in ``task.agent`` (``rule:<name>``), behind the learned agent."""
+    from realistic_indoor.agents.base import RobotSpec
+    from realistic_indoor.agents.rl.learned_agent import LearnedAgent
+    from realistic_indoor.agents.rl.teachers import TeacherPolicy
+    from realistic_indoor.evaluation.episode import play_episode
+    from realistic_indoor.evaluation.tasks import make_env
+
+    env = make_env(task.env)
+    try:
+        rule = TeacherPolicy(task.agent.split(":", 1)[1])
+        agent = LearnedAgent(RobotSpec.from_env(env), model=rule, max_steps=env.unwrapped.config.max_steps)
+        return play_episode(env, agent, task)
+    finally:
+        env.close()
+
+
+def analyse(results: list) -> str:
+    """The report: mean AUC per rule and set, paired differences from the reference rules."""
+    from realistic_indoor.evaluation.aggregate import bootstrap_mean
+
+    values: dict[tuple[str, str], dict[int, float]] = {}
+    for r in results:
+        values.setdefault((r.agent.split(":", 1)[1], r.group), {})[r.seed] = getattr(r, METRIC)
+    rules = list(dict.fromkeys(k[0] for k in values))
+    sets = [s for s in SETS if any(k[1] == s for k in values)]
+    lines = [
+        "# The teacher rules on the tuning seeds",
+        "",
+        "Regenerate with `.venv/bin/python experiments/teacher_rules.py --out experiments/results` "
+        "(a rule already run is read back; `--report-only` only rewrites this report).",
+        "",
+        "Coverage AUC of each rule of `agents.rl.teachers.TEACHERS` behind the learned explorer's agent "
+        "(the same candidates, decisions and navigator), generated buildings at their default sizes and "
+        "step limits, tuning seeds from 900. A difference is paired by building: mean and 95% bootstrap "
+        "interval (* the interval excludes 0).",
+        "",
+        "| set | rule | episodes | AUC | minus frontier | minus structure |",
+        "|---|---|---|---|---|---|",
+    ]
+    for s in sets:
+        for rule in rules:
+            mine = values.get((rule, s), {})
+            if not mine:
+                continue
+            cells = []
+            for ref in REFERENCES:
+                theirs = values.get((ref, s), {})
+                seeds = sorted(set(mine) & set(theirs))
+                if ref == rule or not seeds:
+                    cells.append("")
+                    continue
+                e = bootstrap_mean([mine[k] - theirs[k] for k in seeds])
+                star = " *" if e.low > 0 or e.high < 0 else ""
+                cells.append(f"{e.mean:+.3f} [{e.low:+.3f}, {e.high:+.3f}]{star}")
+            lines.append(
+                f"| {s} | {rule} | {len(mine)} | {fmean(mine.values()):.3f} | {cells[0]} | {cells[1]} |"
+            )
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    from realistic_indoor.cli import run_script
+
+    sys.exit(run_script(main, "teacher_rules"))

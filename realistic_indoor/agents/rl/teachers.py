@@ -1,0 +1,114 @@
+"""The rules the learned explorer can be cloned from: classical explorers' choices, in candidate features.
+
+A rule scores each candidate goal of a decision from its ``candidates`` row and takes the
+lowest score; a detected victim (always candidate 0 when there is one) comes first. Each is a
+classical explorer's rule restricted to the K candidates (a goal farther than the K-th nearest
+frontier is not offered):
+
+* ``frontier``: the smallest path cost (the nearest-frontier explorer: always candidate 0);
+* ``structure``: the path cost, a frontier off the corridors and halls counting the structure
+  explorer's ``room_factor`` (4) times (:class:`~realistic_indoor.agents.structure.StructureAgent`);
+* ``utility``: ``3 * path cost - frontier length`` (ROS explore_lite's weights, the utility
+  explorer's defaults, :class:`~realistic_indoor.agents.utility.UtilityFrontierAgent`);
+* ``structure-utility``: the utility rule with a room frontier's cost counted twice.
+
+:class:`TeacherPolicy` runs a rule where a trained model would (``make_agent("learned", env,
+model=TeacherPolicy("utility"))``), so a rule is evaluated on the same candidates the policy sees.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from realistic_indoor.errors import ConfigError
+
+__all__ = ["TEACHERS", "TeacherPolicy", "TeacherRule", "teacher_choice"]
+
+
+@dataclass(frozen=True)
+class TeacherRule:
+    """A candidate's score: ``cost_weight * path_cost * (room_factor if in a room) - length_weight * size``.
+
+    Attributes:
+        cost_weight: Weight of the path cost (per 10 m of clear floor, the feature's unit).
+        room_factor: Factor on the cost of a frontier off the corridors and halls.
+        length_weight: Weight of the frontier's length (per 10 m).
+    """
+
+    cost_weight: float = 1.0
+    room_factor: float = 1.0
+    length_weight: float = 0.0
+
+    def choose(self, candidates: np.ndarray, mask: np.ndarray) -> int:
+        """The candidate this rule takes.
+
+        Args:
+            candidates: The ``candidates`` observation (flat, ``K * F``).
+            mask: ``(K,)`` bool, the candidates that exist.
+        """
+        from realistic_indoor.envs.macro import CANDIDATE_FEATURES as F
+
+        rows = np.asarray(candidates, dtype=float).reshape(len(mask), len(F))
+        if rows[0, F.index("victim")] > 0.5:
+            return 0
+        factor = np.where(rows[:, F.index("in_room")] > 0.5, self.room_factor, 1.0)
+        score = self.cost_weight * rows[:, F.index("path_cost")] * factor
+        score = score - self.length_weight * rows[:, F.index("size")]
+        return int(np.argmin(np.where(mask, score, np.inf)))
+
+
+TEACHERS: dict[str, TeacherRule] = {
+    "frontier": TeacherRule(),
+    "structure": TeacherRule(room_factor=4.0),
+    "utility": TeacherRule(cost_weight=3.0, length_weight=1.0),
+    "structure-utility": TeacherRule(cost_weight=3.0, room_factor=2.0, length_weight=1.0),
+}
+"""The named rules (see the module's docstring)."""
+
+
+def teacher_choice(candidates: np.ndarray, mask: np.ndarray, teacher: str = "structure") -> int:
+    """The candidate the rule ``teacher`` of :data:`TEACHERS` takes.
+
+    Raises:
+        ConfigError: For an unknown rule.
+    """
+    return _rule(teacher).choose(candidates, mask)
+
+
+def _rule(name: str) -> TeacherRule:
+    if name not in TEACHERS:
+        raise ConfigError(f"unknown teacher {name!r}; rules: {', '.join(TEACHERS)}")
+    return TEACHERS[name]
+
+
+class _Actions:
+    """The stand-in of a model's ``action_space``: its number of actions, K."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+
+
+class TeacherPolicy:
+    """A rule of :data:`TEACHERS` behind a trained model's ``predict``, for the learned agent.
+
+    Args:
+        teacher: The rule's name.
+        n_candidates: K.
+    """
+
+    def __init__(self, teacher: str = "structure", n_candidates: int = 16) -> None:
+        self.rule = _rule(teacher)
+        self.teacher = teacher
+        self.action_space = _Actions(n_candidates)
+
+    def predict(
+        self, obs: dict[str, np.ndarray], action_masks: np.ndarray, deterministic: bool = True
+    ) -> tuple[int, Any]:
+        """The rule's choice at one decision (``deterministic`` is ignored: a rule has one)."""
+        return self.rule.choose(obs["candidates"], np.asarray(action_masks, dtype=bool)), None
+
+    def __repr__(self) -> str:
+        return f"TeacherPolicy({self.teacher!r})"

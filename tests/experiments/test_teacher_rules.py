@@ -1,0 +1,55 @@
+"""The teacher-rules experiment: its report's arithmetic and a small run against the classical explorer."""
+
+import json
+from types import SimpleNamespace
+
+from script_loader import load_script
+
+
+def _load():
+    return load_script("experiments/teacher_rules.py")
+
+
+def test_teacher_rules__report_pairs_each_rule_with_the_references_by_building():
+    module = _load()
+
+    def r(rule, seed, auc):
+        return SimpleNamespace(agent=f"rule:{rule}", group="houses", seed=seed, coverage_auc=auc)
+
+    results = [
+        r("frontier", 900, 0.70), r("frontier", 901, 0.60),
+        r("structure", 900, 0.65), r("structure", 901, 0.55),
+        r("utility", 900, 0.80), r("utility", 901, 0.60),
+    ]  # fmt: skip
+    rows = {
+        line.split("|")[2].strip(): [c.strip() for c in line.strip("|").split("|")]
+        for line in module.analyse(results).splitlines()
+        if line.startswith("| houses")
+    }
+    assert rows["frontier"][2:] == ["2", "0.650", "", "+0.050 [+0.050, +0.050] *"]
+    assert rows["structure"][4] == "-0.050 [-0.050, -0.050] *"
+    # utility: +0.10 and +0.00 against frontier (mean +0.05, interval from the two), +0.15 / +0.05 against structure
+    assert rows["utility"][3] == "0.700"
+    assert rows["utility"][4].startswith("+0.050 [+0.000, +0.100]") and "*" not in rows["utility"][4]
+    assert rows["utility"][5] == "+0.100 [+0.050, +0.150] *"
+
+
+def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_path):
+    """A small run; its frontier rule's episodes are the classical explorer's, AUC for AUC."""
+    from realistic_indoor.evaluation import evaluate
+
+    assert _load().main(["--small", "--out", str(tmp_path), "--rules", "frontier,structure"]) == 0
+    data = json.loads((tmp_path / "teacher_rules" / "frontier" / "results.json").read_text())
+    rule = {e["seed"]: e["coverage_auc"] for e in data["episodes"]}
+    classical = evaluate(
+        ["frontier"],
+        ["HouseExplore-v0"],
+        episodes=2,
+        seed=900,
+        env_kwargs={"max_steps": 60},
+        progress=False,
+        workers=1,
+    )
+    assert rule == {r.seed: r.coverage_auc for r in classical}
+    assert (tmp_path / "teacher_rules" / "structure" / "results.json").is_file()
+    assert "| houses | structure | 2 |" in (tmp_path / "teacher_rules.md").read_text()

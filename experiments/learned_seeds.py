@@ -24,7 +24,11 @@ seconds, with whatever models are found (the tests do).
 ``--track ppo-global-map`` asks the same of the second track, primitive-action PPO with the
 robot's whole map (``realistic-indoor train --preset global-map``): models
 ``ppo_global_<kind>_seed<N>`` in ``experiments/results/ppo_global_models/``, run as ``ppo:MODEL``,
-reported in ``ppo_global_seeds.md`` and ``ppo_global_seeds/<model>/``.
+reported in ``ppo_global_seeds.md`` and ``ppo_global_seeds/<model>/``. ``--track
+learned-structure-utility`` asks it of the learned explorer cloned from the ``structure-utility``
+rule (``realistic-indoor train --preset learned --teacher structure-utility``): models
+``learned_su_<kind>_seed<N>`` in ``experiments/results/learned_su_models/``, reported in
+``learned_su_seeds.md``.
 """
 
 from __future__ import annotations
@@ -57,7 +61,7 @@ class Track:
         report: Name of the report (``<report>.md``) and of the folder of results per model.
         title: The report's title.
         label: What the report calls the explorer in the targets' lines.
-        preset: The ``realistic-indoor train --preset`` that trains its models.
+        preset: The ``realistic-indoor train`` options that train its models (``--preset`` and more).
         committed: Models kept elsewhere than ``models``, by name.
     """
 
@@ -97,8 +101,18 @@ TRACKS = {
         "PPO (global map)",
         "global-map",
     ),
+    "learned-structure-utility": Track(
+        "learned_su",
+        "learned",
+        ROOT / "experiments" / "results" / "learned_su_models",
+        "learned_su_seeds",
+        "The learned explorer cloned from the structure-utility rule: realistic-trained and random-trained",
+        "learned (structure-utility)",
+        "learned --teacher structure-utility",
+    ),
 }
-"""The study's tracks: the learned explorer, and primitive-action PPO given the global map."""
+"""The study's tracks: the learned explorer, primitive-action PPO given the global map, and the
+learned explorer cloned from the ``structure-utility`` rule (``--teacher``) instead of ``structure``."""
 NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (

@@ -311,7 +311,8 @@ def _train_learned(args: argparse.Namespace, config, model_path: Path) -> None:
     require_learned()
     print(
         f"training the learned explorer ({args.preset} preset, seed {config.seed}) on {', '.join(config.env_ids)}: "
-        f"{config.bc_decisions:,} decisions of cloning, then {config.ppo_decisions:,} of MaskablePPO; "
+        f"{config.bc_decisions:,} decisions of cloning the {config.teacher} rule, then {config.ppo_decisions:,} of "
+        "MaskablePPO; "
         f"model to {model_path}",
         flush=True,
     )

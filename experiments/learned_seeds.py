@@ -63,6 +63,8 @@ class Track:
         label: What the report calls the explorer in the targets' lines.
         preset: The ``realistic-indoor train`` options that train its models (``--preset`` and more).
         committed: Models kept elsewhere than ``models``, by name.
+        teacher: The rule a learned model must have cloned (its ``.json``'s ``config.teacher``;
+            ``structure`` where the ``.json`` predates the option); ``None``: not checked.
     """
 
     prefix: str
@@ -73,6 +75,7 @@ class Track:
     label: str
     preset: str
     committed: dict[str, Path] = field(default_factory=dict)
+    teacher: str | None = None
 
     @property
     def name_pattern(self) -> re.Pattern:
@@ -91,6 +94,7 @@ TRACKS = {
         "learned",
         # the realistic seed-0 model is the package's own
         {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+        "structure",
     ),
     "ppo-global-map": Track(
         "ppo_global",
@@ -109,6 +113,7 @@ TRACKS = {
         "The learned explorer cloned from the structure-utility rule: realistic-trained and random-trained",
         "learned (structure-utility)",
         "learned --teacher structure-utility",
+        teacher="structure-utility",
     ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, and the
@@ -217,7 +222,25 @@ def find_models(folder: Path, track: Track = TRACKS["learned"]) -> dict[str, Pat
     for name, path in track.committed.items():
         if name not in found and (folder / f"{name}.json").is_file() and path.is_file():
             found[name] = path
+    for name in found:
+        _check_teacher(folder / f"{name}.json", track)
     return dict(sorted(found.items(), key=lambda item: _kind_seed(item[0], pattern)))
+
+
+def _check_teacher(meta: Path, track: Track) -> None:
+    """Refuse a model whose ``.json`` says it cloned another rule than the track's."""
+    import json
+
+    from realistic_indoor.errors import ConfigError
+
+    if track.teacher is None or not meta.is_file():
+        return
+    teacher = json.loads(meta.read_text()).get("config", {}).get("teacher", "structure")
+    if teacher != track.teacher:
+        raise ConfigError(
+            f"{meta.name}: the model cloned the {teacher} rule, and the {track.prefix} models clone "
+            f"{track.teacher}; move it out of the folder or train it with --teacher {track.teacher}"
+        )
 
 
 def _kind_seed(name: str, pattern: re.Pattern = NAME) -> tuple[int, int]:

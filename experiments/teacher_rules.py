@@ -80,6 +80,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parse_args(argv)
     setup = SMALL if args.small else FULL
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="teacher_rules")
+    if args.workers is not None and args.workers < 1:
+        raise ConfigError(f"--workers must be an integer >= 1, not {args.workers}")
     rules = args.rules.split(",") if args.rules else list(TEACHERS)
     unknown = [r for r in rules if r not in TEACHERS]
     if unknown:

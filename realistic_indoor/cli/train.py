@@ -173,6 +173,10 @@ def _learned_config(args: argparse.Namespace, env_ids: tuple[str, ...]):
     if args.n_envs is not None:
         changes["n_envs"] = args.n_envs
     if args.teacher is not None:
+        if args.no_train:
+            raise ConfigError(
+                "--teacher chooses the rule a training clones; with --no-train nothing is trained, leave it out"
+            )
         changes["teacher"] = args.teacher
     return learned_preset(args.preset, **changes)
 

@@ -1,6 +1,6 @@
 """The learned explorer: its teacher rules, its agent loop, its model files and its training command.
 
-Expected values are worked out by hand (the expert rule on hand-made candidates) or come from
+Expected values are worked out by hand (the teacher rules on hand-made candidates) or come from
 the classical explorer (a policy that always chooses candidate 0 is the nearest-frontier
 explorer, whichever side of the environment runs the macro actions).
 """

@@ -123,6 +123,33 @@ def test_global_map_preset__encodes_each_map_with_the_compact_cnn(global_map_mod
     assert weights["scan"] == weights["velocity"] == weights["time_left"] == 0
 
 
+def test_global_map_preset__model_loads_in_a_fresh_process(global_map_model):
+    """A saved compact encoder is found again by its import path, where nothing imported it yet."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from stable_baselines3 import PPO; "
+        "m = PPO.load(sys.argv[1], device='cpu'); print(type(m.policy.features_extractor).__name__)"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code, str(global_map_model)], capture_output=True, text=True, check=False
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "MapEncoder"
+
+
+def test_compact_encoder__refuses_images_too_small_for_its_convolutions_in_one_line():
+    from gymnasium import spaces
+
+    from realistic_indoor.agents.rl.encoders import CompactCNN
+
+    CompactCNN(spaces.Box(0, 255, (4, 36, 36), np.uint8))  # the smallest side it takes
+    with pytest.raises(ConfigError, match="at least 36 pixels a side, got 32 x 32") as err:
+        CompactCNN(spaces.Box(0, 255, (4, 32, 32), np.uint8))
+    assert "\n" not in str(err.value)
+
+
 def test_ppo_config__unknown_map_encoder_is_a_one_line_error():
     with pytest.raises(ConfigError, match="map_encoder must be one of nature, compact") as err:
         PPOConfig(map_encoder="resnet")

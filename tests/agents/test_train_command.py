@@ -148,3 +148,9 @@ def test_eval_plans__smoke_is_tiny_and_checked():
         EvalPlan(episodes=-1)
     with pytest.raises(ConfigError, match="areas_m2"):
         EvalPlan(episodes=1, areas_m2={"office": 0.0})
+
+
+def test_train__teacher_without_training_is_a_one_line_error(tmp_path, monkeypatch, capsys, no_training):
+    monkeypatch.chdir(tmp_path)
+    code = main(["train", "--preset", "learned-smoke", "--no-train", "--teacher", "utility"])
+    assert "--teacher chooses the rule a training clones; with --no-train" in _one_line_error(capsys, code)

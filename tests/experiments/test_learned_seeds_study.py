@@ -102,3 +102,24 @@ def test_ppo_track__its_own_models_agent_and_labels(tmp_path):
     assert report.startswith("# Primitive-action PPO with the global map")
     assert _row(report, "| offices | 2 |")[2:] == ["0.400", "0.200", "+0.200 [+0.100, +0.300] *"]
     assert "- offices: PPO (global map) minus frontier -0.300 [-0.400, -0.200]" in report
+
+
+def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules(tmp_path):
+    from realistic_indoor.errors import ConfigError
+
+    module = _load()
+    track = module.TRACKS["learned-structure-utility"]
+    for name in ("learned_su_realistic_seed0", "learned_realistic_seed1"):
+        (tmp_path / f"{name}.zip").write_bytes(b"")
+    meta = tmp_path / "learned_su_realistic_seed0.json"
+    meta.write_text(json.dumps({"config": {"teacher": "structure-utility"}}))
+    assert list(module.find_models(tmp_path, track)) == ["learned_su_realistic_seed0"]
+    assert track.agent == "learned"
+    meta.write_text(json.dumps({"config": {"teacher": "structure"}}))
+    with pytest.raises(
+        ConfigError, match="cloned the structure rule, and the learned_su models clone structure-utility"
+    ):
+        module.find_models(tmp_path, track)
+    meta.write_text(json.dumps({"config": {}}))  # a model from before the option cloned structure
+    with pytest.raises(ConfigError, match="cloned the structure rule"):
+        module.find_models(tmp_path, track)

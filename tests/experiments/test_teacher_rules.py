@@ -53,3 +53,18 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
     assert rule == {r.seed: r.coverage_auc for r in classical}
     assert (tmp_path / "teacher_rules" / "structure" / "results.json").is_file()
     assert "| houses | structure | 2 |" in (tmp_path / "teacher_rules.md").read_text()
+
+
+def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
+    from realistic_indoor.cli import run_script
+
+    module = _load()
+    for argv, message in (
+        (["--workers", "0"], "--workers must be an integer >= 1, not 0"),
+        (["--rules", "oracle"], "--rules: unknown ['oracle']"),
+    ):
+        code = run_script(
+            lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"
+        )
+        err = capsys.readouterr().err.strip()
+        assert code != 0 and message in err and "\n" not in err

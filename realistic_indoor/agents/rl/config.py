@@ -56,10 +56,11 @@ class PPOConfig:
             ``candidates`` needs macro actions: the learned explorer's recipe
             (:mod:`~realistic_indoor.agents.rl.learned`).
         map_encoder: How the policy encodes each map image (``local_map``, ``global_map``):
-            ``"nature"`` (stable-baselines3's default, the Atari CNN and a 256-wide layer: 2.4 M
-            weights on the 128-pixel global map) or ``"compact"``
-            (:class:`~realistic_indoor.agents.rl.encoders.MapEncoder`: max-pooled to at most 64
-            pixels a side, a small CNN and a 128-wide layer, about 80 k weights per image).
+            ``"nature"`` (stable-baselines3's default, the Atari CNN and a 256-wide layer: 340 k
+            weights on the 64-pixel global map) or ``"compact"``
+            (:class:`~realistic_indoor.agents.rl.encoders.MapEncoder`: the same kernels and
+            strides with fewer channels, averaged to 4 x 4, and a 128-wide layer: 87 k weights;
+            images of at least 36 pixels a side).
         n_envs: Environments run in parallel.
         vec_env: ``"batched"`` (the default: the ids' native vector environments, all
             sub-environments of an id stepped by one compiled call, in this process; with

@@ -22,7 +22,12 @@ from stable_baselines3.common.preprocessing import get_flattened_obs_dim, is_ima
 from stable_baselines3.common.torch_layers import BaseFeaturesExtractor
 from torch import nn
 
-__all__ = ["CompactCNN", "MapEncoder"]
+from realistic_indoor.errors import ConfigError
+
+__all__ = ["MIN_SIDE_PX", "CompactCNN", "MapEncoder"]
+
+MIN_SIDE_PX = 36
+"""The smallest image side the three convolutions take (8 with stride 4, 4 with stride 2, 3)."""
 
 
 class CompactCNN(nn.Module):
@@ -35,7 +40,12 @@ class CompactCNN(nn.Module):
 
     def __init__(self, space: spaces.Box, features_dim: int = 128) -> None:
         super().__init__()
-        channels = space.shape[0]
+        channels, height, width = space.shape
+        if min(height, width) < MIN_SIDE_PX:
+            raise ConfigError(
+                f"the compact map encoder needs images of at least {MIN_SIDE_PX} pixels a side, got "
+                f"{height} x {width}; use a larger map (global_map size_px) or map_encoder='nature'"
+            )
         self.cnn = nn.Sequential(
             nn.Conv2d(channels, 16, kernel_size=8, stride=4),
             nn.ReLU(),

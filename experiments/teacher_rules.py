@@ -130,16 +130,14 @@ def run_rule(rule: str, setup: Setup, workers: int) -> list:
 
 def _episode(task: Any) -> Any:
     """One episode of the rule named in ``task.agent`` (``rule:<name>``), behind the learned agent."""
-    from realistic_indoor.agents.base import RobotSpec
-    from realistic_indoor.agents.rl.learned_agent import LearnedAgent
+    from realistic_indoor.agents import make_agent
     from realistic_indoor.agents.rl.teachers import TeacherPolicy
     from realistic_indoor.evaluation.episode import play_episode
     from realistic_indoor.evaluation.tasks import make_env
 
     env = make_env(task.env)
     try:
-        rule = TeacherPolicy(task.agent.split(":", 1)[1])
-        agent = LearnedAgent(RobotSpec.from_env(env), model=rule, max_steps=env.unwrapped.config.max_steps)
+        agent = make_agent("learned", env, model=TeacherPolicy(task.agent.split(":", 1)[1]))
         return play_episode(env, agent, task)
     finally:
         env.close()

@@ -15,11 +15,12 @@ from realistic_indoor.cli.train import default_model_path, envs_label
 from realistic_indoor.errors import ConfigError
 
 ROOT = Path(__file__).resolve().parents[2]
-COMMITTED_MODELS = sorted((ROOT / "experiments" / "results").glob("ppo_*"))
+COMMITTED_MODELS = sorted(p for p in (ROOT / "experiments" / "results").rglob("ppo_*") if p.is_file())
+"""The committed PPO models and their files, in the results folder and the folders below it."""
 
 
 def _digests(paths: list[Path]) -> dict[str, str]:
-    return {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in paths}
+    return {str(p.relative_to(ROOT)): hashlib.sha256(p.read_bytes()).hexdigest() for p in paths}
 
 
 @pytest.fixture

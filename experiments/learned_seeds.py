@@ -28,7 +28,9 @@ reported in ``ppo_global_seeds.md`` and ``ppo_global_seeds/<model>/``. ``--track
 learned-structure-utility`` asks it of the learned explorer cloned from the ``structure-utility``
 rule (``realistic-indoor train --preset learned --teacher structure-utility``): models
 ``learned_su_<kind>_seed<N>`` in ``experiments/results/learned_su_models/``, reported in
-``learned_su_seeds.md``.
+``learned_su_seeds.md``; ``--track learned-structure-utility-area``, of the one cloned from the
+``structure-utility-area`` rule: models ``learned_sua_<kind>_seed<N>`` in
+``experiments/results/learned_sua_models/``, reported in ``learned_sua_seeds.md``.
 """
 
 from __future__ import annotations
@@ -115,9 +117,20 @@ TRACKS = {
         "learned --teacher structure-utility",
         teacher="structure-utility",
     ),
+    "learned-structure-utility-area": Track(
+        "learned_sua",
+        "learned",
+        ROOT / "experiments" / "results" / "learned_sua_models",
+        "learned_sua_seeds",
+        "The learned explorer cloned from the structure-utility-area rule: realistic-trained and random-trained",
+        "learned (structure-utility-area)",
+        "learned --teacher structure-utility-area",
+        teacher="structure-utility-area",
+    ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, and the
-learned explorer cloned from the ``structure-utility`` rule (``--teacher``) instead of ``structure``."""
+learned explorer cloned from the ``structure-utility`` and ``structure-utility-area`` rules
+(``--teacher``) instead of ``structure``."""
 NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (

@@ -16,15 +16,19 @@ Full run (about 8 minutes per rule on 2 idle cores)::
     .venv/bin/python experiments/teacher_rules.py --out experiments/results
 
 writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
-results are there already is not run again. ``--small`` runs the pipeline on houses in seconds
+results are there already is not run again. ``--extra NAME=COST,ROOM,LENGTH,GAIN`` (repeatable)
+runs a rule that is not registered, with those weights of
+:class:`~realistic_indoor.agents.rl.teachers.TeacherRule`: how the registered rules were searched
+for (``--extra area=1,1,0,2`` is the information gain alone). ``--small`` runs the pipeline on houses in seconds
 (the tests do).
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import sys
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
 from statistics import fmean
@@ -65,6 +69,13 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     p.add_argument("--small", action="store_true", help="houses, short episodes: seconds, for tests")
     p.add_argument("--out", default=None, help="output folder (default runs/teacher_rules)")
     p.add_argument("--rules", default=None, help="comma-separated rules (default: every rule)")
+    p.add_argument(
+        "--extra",
+        action="append",
+        default=[],
+        metavar="NAME=COST,ROOM,LENGTH,GAIN",
+        help="also run an unregistered rule with these TeacherRule weights (repeatable)",
+    )
     p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
     p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
     return p.parse_args(argv)
@@ -86,8 +97,10 @@ def main(argv: list[str] | None = None) -> int:
     unknown = [r for r in rules if r not in TEACHERS]
     if unknown:
         raise ConfigError(f"--rules: unknown {unknown}; rules: {', '.join(TEACHERS)}")
+    known = {name: TEACHERS[name] for name in (*REFERENCES, *rules)}
+    known.update(parse_extra(args.extra, TEACHERS))
     results: list = []
-    for rule in (*REFERENCES, *(r for r in rules if r not in REFERENCES)):
+    for rule, weights in known.items():
         folder = out / "teacher_rules" / rule
         if (folder / "results.json").is_file():
             results += read_results(folder / "results.json")[0]
@@ -95,11 +108,12 @@ def main(argv: list[str] | None = None) -> int:
         if args.report_only:
             continue
         print(f"running the {rule} rule", flush=True)
-        ran = run_rule(rule, setup, args.workers or setup.workers)
+        ran = run_rule(rule, weights, setup, args.workers or setup.workers)
         meta = {
             "command": script_command("experiments/teacher_rules.py", argv),
             "commit": checkout_commit(ROOT),
             "rule": rule,
+            "weights": asdict(weights),
             "seeds": [setup.seed, setup.seed + setup.episodes - 1],
             "sets": list(setup.sets),
         }
@@ -111,13 +125,43 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-def run_rule(rule: str, setup: Setup, workers: int) -> list:
-    """Every episode of ``rule``, in a stable order (set, seed)."""
+def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
+    """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN`` options, by name.
+
+    Raises:
+        ConfigError: For a malformed option or a name already registered.
+    """
+    from realistic_indoor.agents.rl.teachers import TeacherRule
+    from realistic_indoor.errors import ConfigError
+
+    out = {}
+    for spec in specs:
+        name, _, weights = spec.partition("=")
+        try:
+            values = [float(v) for v in weights.split(",")]
+        except ValueError:
+            values = []
+        if not name or name in registered or len(values) != 4 or not all(math.isfinite(v) for v in values):
+            raise ConfigError(
+                f"--extra {spec!r}: give a new name and four numbers, NAME=COST,ROOM,LENGTH,GAIN "
+                "(e.g. area=1,1,0,2); registered names are taken"
+            )
+        out[name] = TeacherRule(*values)
+    return out
+
+
+def run_rule(rule: str, weights: Any, setup: Setup, workers: int) -> list:
+    """Every episode of the rule ``weights`` (a ``TeacherRule``) named ``rule``, in a stable order (set, seed)."""
     from realistic_indoor.evaluation import EnvSpec, EpisodeTask
 
     tasks = [
-        EpisodeTask(
-            f"rule:{rule}", EnvSpec(SETS[label], kwargs=dict(setup.env_kwargs), label=label, group=label), s
+        (
+            EpisodeTask(
+                f"rule:{rule}",
+                EnvSpec(SETS[label], kwargs=dict(setup.env_kwargs), label=label, group=label),
+                s,
+            ),
+            weights,
         )
         for label in setup.sets
         for s in range(setup.seed, setup.seed + setup.episodes)
@@ -128,16 +172,17 @@ def run_rule(rule: str, setup: Setup, workers: int) -> list:
         return pool.map(_episode, tasks, chunksize=1)
 
 
-def _episode(task: Any) -> Any:
-    """One episode of the rule named in ``task.agent`` (``rule:<name>``), behind the learned agent."""
+def _episode(job: tuple[Any, Any]) -> Any:
+    """One episode: ``(task, rule)``, the rule behind the learned agent."""
     from realistic_indoor.agents import make_agent
     from realistic_indoor.agents.rl.teachers import TeacherPolicy
     from realistic_indoor.evaluation.episode import play_episode
     from realistic_indoor.evaluation.tasks import make_env
 
+    task, rule = job
     env = make_env(task.env)
     try:
-        agent = make_agent("learned", env, model=TeacherPolicy(task.agent.split(":", 1)[1]))
+        agent = make_agent("learned", env, model=TeacherPolicy(rule))
         return play_episode(env, agent, task)
     finally:
         env.close()

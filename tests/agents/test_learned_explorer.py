@@ -57,6 +57,16 @@ def test_teachers__utility_trades_a_long_frontier_against_three_times_its_cost()
     assert teacher_choice(flat, mask, "structure-utility") == 0
 
 
+def test_teacher_rule__a_gain_weight_trades_unobserved_area_against_path_cost():
+    from realistic_indoor.agents.rl.teachers import TeacherRule
+
+    # 0.5 - 1.0 * 0.2 = 0.3 (5 m, 2 m2 unseen) against 1.2 - 1.0 * 1.5 = -0.3 (12 m, 15 m2 unseen)
+    flat, mask = _rows({"path_cost": 0.5, "unobserved": 0.2}, {"path_cost": 1.2, "unobserved": 1.5})
+    assert TeacherRule(gain_weight=1.0).choose(flat, mask) == 1
+    assert TeacherRule(gain_weight=0.5).choose(flat, mask) == 0  # 0.4 against 0.45
+    assert TeacherRule().choose(flat, mask) == 0  # no gain term: the nearer
+
+
 def test_teachers__are_the_classical_explorers_rules():
     from realistic_indoor.agents.structure import StructureConfig
     from realistic_indoor.agents.utility import UtilityConfig

@@ -38,9 +38,13 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
     """A small run; its frontier rule's episodes are the classical explorer's, AUC for AUC."""
     from realistic_indoor.evaluation import evaluate
 
-    assert _load().main(["--small", "--out", str(tmp_path), "--rules", "frontier,structure"]) == 0
+    argv = ["--small", "--out", str(tmp_path), "--rules", "frontier,structure", "--extra", "nearest=1,1,0,0"]
+    assert _load().main(argv) == 0
     data = json.loads((tmp_path / "teacher_rules" / "frontier" / "results.json").read_text())
     rule = {e["seed"]: e["coverage_auc"] for e in data["episodes"]}
+    # an unregistered rule with the frontier rule's weights drives as it does
+    extra = json.loads((tmp_path / "teacher_rules" / "nearest" / "results.json").read_text())
+    assert {e["seed"]: e["coverage_auc"] for e in extra["episodes"]} == rule
     classical = evaluate(
         ["frontier"],
         ["HouseExplore-v0"],
@@ -62,6 +66,9 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
     for argv, message in (
         (["--workers", "0"], "--workers must be an integer >= 1, not 0"),
         (["--rules", "oracle"], "--rules: unknown ['oracle']"),
+        (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four numbers"),
+        (["--extra", "frontier=1,1,0,0"], "--extra 'frontier=1,1,0,0': give a new name"),
+        (["--extra", "area=1,1,0,x"], "NAME=COST,ROOM,LENGTH,GAIN"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

@@ -94,9 +94,7 @@ TRACKS = {
         "The learned explorer across training seeds: realistic-trained and random-trained",
         "learned",
         "learned",
-        # the realistic seed-0 model is the package's own
-        {"learned_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
-        "structure",
+        teacher="structure",
     ),
     "ppo-global-map": Track(
         "ppo_global",
@@ -124,8 +122,10 @@ TRACKS = {
         "learned_sua_seeds",
         "The learned explorer cloned from the structure-utility-area rule: realistic-trained and random-trained",
         "learned (structure-utility-area)",
-        "learned --teacher structure-utility-area",
-        teacher="structure-utility-area",
+        "learned",
+        # the realistic seed-0 model is the package's own (the recipe's rule)
+        {"learned_sua_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+        "structure-utility-area",
     ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, and the

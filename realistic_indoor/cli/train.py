@@ -103,7 +103,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--teacher",
         choices=TEACHERS,
         help="the learned presets only: the classical rule cloned before MaskablePPO (default: the preset's, "
-        "structure)",
+        "structure-utility-area)",
     )
     p.add_argument(
         "--out",

@@ -186,6 +186,22 @@ def test_committed_model__explores_a_house():
     assert agent.decisions > 3
 
 
+def test_committed_model__came_from_the_recipe_and_its_record_is_beside_it():
+    """The package's model is the study's realistic seed-0 model of the recipe's own rule."""
+    from pathlib import Path
+
+    from realistic_indoor.agents.rl.learned import learned_preset
+
+    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_sua_models"
+    record = json.loads((folder / "learned_sua_realistic_seed0.json").read_text())
+    assert record["config"] == learned_preset("learned").to_dict()  # the default recipe, seed 0
+    assert record["config"]["teacher"] == "structure-utility-area"
+    log = (folder / "learned_sua_realistic_seed0.log").read_text()
+    assert f"saved runs/learned_sua_realistic_seed0.zip after {record['seconds']:.0f} s" in log
+    # the study's models keep no copy: the package's file is the one
+    assert not (folder / "learned_sua_realistic_seed0.zip").exists()
+
+
 @pytest.mark.slow
 def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path):
     pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")

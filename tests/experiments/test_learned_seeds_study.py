@@ -123,3 +123,19 @@ def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules
     meta.write_text(json.dumps({"config": {}}))  # a model from before the option cloned structure
     with pytest.raises(ConfigError, match="cloned the structure rule"):
         module.find_models(tmp_path, track)
+
+
+def test_structure_utility_area_track__its_seed_0_model_is_the_package_one(tmp_path):
+    from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL
+
+    module = _load()
+    track = module.TRACKS["learned-structure-utility-area"]
+    (tmp_path / "learned_sua_realistic_seed0.json").write_text(
+        json.dumps({"config": {"teacher": "structure-utility-area"}})
+    )
+    (tmp_path / "learned_sua_random_seed0.zip").write_bytes(b"")
+    found = module.find_models(tmp_path, track)
+    assert list(found) == ["learned_sua_realistic_seed0", "learned_sua_random_seed0"]
+    assert found["learned_sua_realistic_seed0"] == DEFAULT_MODEL
+    # the structure track has no committed model any more: its seed-0 model lies in its folder
+    assert module.TRACKS["learned"].committed == {}

@@ -9,9 +9,10 @@ evaluation's sizes and step limits (the generators' default areas, the ids' own 
 The recipe, :func:`train_learned`:
 
 1. **Behaviour cloning** from a classical explorer's rule, which the candidates' features
-   express exactly (:attr:`LearnedConfig.teacher`, by default the structure-aware explorer's: the
-   smallest path cost, a frontier in a room counting 4 times its cost; a detected victim first;
-   :mod:`~realistic_indoor.agents.rl.teachers`): decisions are collected with that rule
+   express exactly (:attr:`LearnedConfig.teacher`, by default ``structure-utility-area``: three
+   times the path cost, doubled for a frontier in a room, less the frontier's length and twice
+   the unobserved area near it; a detected victim first; :mod:`~realistic_indoor.agents.rl.teachers`,
+   where the rules were compared on tuning seeds): decisions are collected with that rule
    choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to its choices
    (cross-entropy) and the critic to the discounted returns that followed.
 2. **MaskablePPO** from there, for the rest of the budget.
@@ -85,7 +86,7 @@ class LearnedConfig:
     env_ids: tuple[str, ...] = LEARNED_IDS
     n_candidates: int = 16
     n_envs: int = 2
-    teacher: str = "structure"
+    teacher: str = "structure-utility-area"
     bc_decisions: int = 20_000
     bc_epochs: int = 30
     ppo_decisions: int = 40_000

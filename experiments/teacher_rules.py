@@ -16,10 +16,11 @@ Full run (about 8 minutes per rule on 2 idle cores)::
     .venv/bin/python experiments/teacher_rules.py --out experiments/results
 
 writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
-results are there already is not run again. ``--extra NAME=COST,ROOM,LENGTH,GAIN`` (repeatable)
-runs a rule that is not registered, with those weights of
-:class:`~realistic_indoor.agents.rl.teachers.TeacherRule`: how the registered rules were searched
-for (``--extra area=1,1,0,2`` is the information gain alone). ``--small`` runs the pipeline on houses in seconds
+results are there already is not run again (one saved with other weights under the same name is
+refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN`` (repeatable) runs a rule that is not registered,
+with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the registered
+rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give the same
+option again to keep it in a later report). ``--small`` runs the pipeline on houses in seconds
 (the tests do).
 """
 
@@ -103,7 +104,13 @@ def main(argv: list[str] | None = None) -> int:
     for rule, weights in known.items():
         folder = out / "teacher_rules" / rule
         if (folder / "results.json").is_file():
-            results += read_results(folder / "results.json")[0]
+            episodes, saved = read_results(folder / "results.json")
+            if saved.get("weights", asdict(weights)) != asdict(weights):
+                raise ConfigError(
+                    f"{folder}: results of the rule {rule!r} with other weights ({saved['weights']}); "
+                    "give this one another name, or remove the folder to run it again"
+                )
+            results += episodes
             continue
         if args.report_only:
             continue
@@ -151,7 +158,7 @@ def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
 
 
 def run_rule(rule: str, weights: Any, setup: Setup, workers: int) -> list:
-    """Every episode of the rule ``weights`` (a ``TeacherRule``) named ``rule``, in a stable order (set, seed)."""
+    """Every episode of the rule ``weights`` (a ``TeacherRule``) called ``rule``, by set, then seed."""
     from realistic_indoor.evaluation import EnvSpec, EpisodeTask
 
     tasks = [

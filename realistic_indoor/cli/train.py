@@ -19,7 +19,7 @@ _DESCRIPTION = (
     ".zip), then evaluate it against the random agent and the frontier explorer on the training "
     "ids at their default size. With --preset learned, train the learned explorer instead: a "
     "policy choosing among candidate goals (frontier macro actions, sb3-contrib MaskablePPO, "
-    "cloned from the structure explorer's rule first), evaluated against the frontier, utility "
+    "cloned from a classical rule first, --teacher), evaluated against the frontier, utility "
     'and structure explorers. Needs the rl extra: pip install "realistic-indoor[rl]".'
 )
 _EPILOG = """\
@@ -33,8 +33,9 @@ presets (measured on 2 CPU cores):
   global-map  the default, with the robot's whole map (global_map) and the share of the step
            limit left (time_left) in the policy's view; its environments run in sub-processes
   learned  the learned explorer on offices, schools and houses at their default sizes and
-           step limits: 20,000 decisions of cloning, then 40,000 of MaskablePPO (--timesteps
-           sets these), then 2 episodes per agent and id
+           step limits: 20,000 decisions cloning the structure-utility-area rule (--teacher),
+           then 40,000 of MaskablePPO (--timesteps sets these; 26 to 39 minutes), then 2
+           episodes per agent and id
   learned-smoke  seconds, on houses: checks the learned explorer's set-up
 
 output:

@@ -3,6 +3,7 @@
 import json
 from types import SimpleNamespace
 
+import pytest
 from script_loader import load_script
 
 
@@ -57,6 +58,12 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
     assert rule == {r.seed: r.coverage_auc for r in classical}
     assert (tmp_path / "teacher_rules" / "structure" / "results.json").is_file()
     assert "| houses | structure | 2 |" in (tmp_path / "teacher_rules.md").read_text()
+    assert "| houses | nearest | 2 |" in (tmp_path / "teacher_rules.md").read_text()
+    # the same name with other weights is refused, not read back as if it were the same rule
+    from realistic_indoor.errors import ConfigError
+
+    with pytest.raises(ConfigError, match="results of the rule 'nearest' with other weights"):
+        _load().main([*argv[:-1], "nearest=3,1,1,0"])
 
 
 def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):

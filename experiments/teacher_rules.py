@@ -126,7 +126,7 @@ def main(argv: list[str] | None = None) -> int:
         }
         write_results(ran, folder, meta)
         results += ran
-    report = analyse(results)
+    report = analyse(results, args.extra)
     write_text(out / "teacher_rules.md", report)
     print(report)
     return 0
@@ -195,8 +195,14 @@ def _episode(job: tuple[Any, Any]) -> Any:
         env.close()
 
 
-def analyse(results: list) -> str:
-    """The report: mean AUC per rule and set, paired differences from the reference rules."""
+def analyse(results: list, extra: list[str] | tuple[str, ...] = ()) -> str:
+    """The report: mean AUC per rule and set, paired differences from the reference rules.
+
+    Args:
+        results: The episodes of every rule.
+        extra: The ``--extra`` options of the run, for the command that regenerates the report.
+    """
+    options = "".join(f" --extra {e}" for e in extra)
     from realistic_indoor.evaluation.aggregate import bootstrap_mean
 
     values: dict[tuple[str, str], dict[int, float]] = {}
@@ -207,10 +213,11 @@ def analyse(results: list) -> str:
     lines = [
         "# The teacher rules on the tuning seeds",
         "",
-        "Regenerate with `.venv/bin/python experiments/teacher_rules.py --out experiments/results` "
+        f"Regenerate with `.venv/bin/python experiments/teacher_rules.py --out experiments/results{options}` "
         "(a rule already run is read back; `--report-only` only rewrites this report).",
         "",
-        "Coverage AUC of each rule of `agents.rl.teachers.TEACHERS` behind the learned explorer's agent "
+        "Coverage AUC of each rule of `agents.rl.teachers.TEACHERS` (and of the `--extra` weights) behind "
+        "the learned explorer's agent "
         "(the same candidates, decisions and navigator), generated buildings at their default sizes and "
         "step limits, tuning seeds from 900. A difference is paired by building: mean and 95% bootstrap "
         "interval (* the interval excludes 0).",

@@ -14,7 +14,7 @@ frontier is not offered):
 * ``structure-utility-area``: ``structure-utility`` with a second gain, the unobserved area
   near the frontier (the utility explorer's ``"area"`` gain), weighted 2 per 10 m2 against 3 per
   10 m of path (a m2 unseen is worth about 0.7 m of travel): chosen on the tuning seeds as the
-  rule that leads the nearest frontier in houses too, where every other rule trails it.
+  registered rule that leads the nearest frontier in houses too, where the others trail it.
 
 :class:`TeacherPolicy` runs a rule where a trained model would (``make_agent("learned", env,
 model=TeacherPolicy("utility"))``), so a rule is evaluated on the same candidates the policy sees.

@@ -202,8 +202,9 @@ def analyse(results: list, extra: list[str] | tuple[str, ...] = ()) -> str:
         results: The episodes of every rule.
         extra: The ``--extra`` options of the run, for the command that regenerates the report.
     """
-    options = "".join(f" --extra {e}" for e in extra)
     from realistic_indoor.evaluation.aggregate import bootstrap_mean
+
+    options = "".join(f" --extra {e}" for e in extra)
 
     values: dict[tuple[str, str], dict[int, float]] = {}
     for r in results:

@@ -71,7 +71,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``train`` (shared with ``experiments/train_ppo.py``)."""
     from realistic_indoor.agents.rl.config import PPO_PRESETS, VEC_ENVS
     from realistic_indoor.agents.rl.learned import LEARNED_PRESETS
-    from realistic_indoor.agents.rl.teachers import TEACHERS
+    from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER, TEACHERS
 
     p.add_argument(
         "--preset",
@@ -104,7 +104,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--teacher",
         choices=TEACHERS,
         help="the learned presets only: the classical rule cloned before MaskablePPO (default: the preset's, "
-        "structure-utility-area)",
+        f"{DEFAULT_TEACHER})",
     )
     p.add_argument(
         "--out",

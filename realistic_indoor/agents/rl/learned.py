@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from realistic_indoor.agents.rl.config import REALISTIC_IDS
-from realistic_indoor.agents.rl.teachers import TEACHERS
+from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER, TEACHERS
 from realistic_indoor.checks import require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path, write_text
@@ -86,7 +86,7 @@ class LearnedConfig:
     env_ids: tuple[str, ...] = LEARNED_IDS
     n_candidates: int = 16
     n_envs: int = 2
-    teacher: str = "structure-utility-area"
+    teacher: str = DEFAULT_TEACHER
     bc_decisions: int = 20_000
     bc_epochs: int = 30
     ppo_decisions: int = 40_000

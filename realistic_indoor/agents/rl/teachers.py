@@ -29,7 +29,7 @@ import numpy as np
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["TEACHERS", "TeacherPolicy", "TeacherRule", "teacher_choice"]
+__all__ = ["DEFAULT_TEACHER", "TEACHERS", "TeacherPolicy", "TeacherRule", "teacher_choice"]
 
 
 @dataclass(frozen=True)
@@ -80,6 +80,9 @@ TEACHERS: dict[str, TeacherRule] = {
     ),
 }
 """The named rules (see the module's docstring)."""
+
+DEFAULT_TEACHER = "structure-utility-area"
+"""The rule the learned explorer's recipe clones (:attr:`~realistic_indoor.agents.rl.learned.LearnedConfig.teacher`)."""
 
 
 def teacher_choice(candidates: np.ndarray, mask: np.ndarray, teacher: str = "structure") -> int:

@@ -136,7 +136,7 @@ def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
     """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN`` options, by name.
 
     Raises:
-        ConfigError: For a malformed option or a name already registered.
+        ConfigError: For a malformed option, a name already registered or a name given twice.
     """
     from realistic_indoor.agents.rl.teachers import TeacherRule
     from realistic_indoor.errors import ConfigError
@@ -153,6 +153,8 @@ def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
                 f"--extra {spec!r}: give a new name and four numbers, NAME=COST,ROOM,LENGTH,GAIN "
                 "(e.g. area=1,1,0,2); registered names are taken"
             )
+        if name in out:
+            raise ConfigError(f"--extra {name!r} is given twice; give each rule one name")
         out[name] = TeacherRule(*values)
     return out
 

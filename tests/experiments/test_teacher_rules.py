@@ -76,6 +76,7 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
         (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four numbers"),
         (["--extra", "frontier=1,1,0,0"], "--extra 'frontier=1,1,0,0': give a new name"),
         (["--extra", "area=1,1,0,x"], "NAME=COST,ROOM,LENGTH,GAIN"),
+        (["--extra", "area=1,1,0,2", "--extra", "area=1,1,0,3"], "--extra 'area' is given twice"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

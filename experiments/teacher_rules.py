@@ -17,11 +17,13 @@ Full run (about 8 minutes per rule on 2 idle cores)::
 
 writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
 results are there already is not run again (one saved with other weights under the same name is
-refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN`` (repeatable) runs a rule that is not registered,
+refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` (repeatable) runs a rule that is not registered,
 with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the registered
 rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give the same
-option again to keep it in a later report). ``--small`` runs the pipeline on houses in seconds
-(the tests do).
+option again to keep it in a later report; a fifth number, the heading term ``turn_weight``,
+``--extra su-turn=3,2,1,0,1.5``). ``--sets schools`` runs the rules new to the folder on some
+building types only (the report shows each rule where it ran). ``--small`` runs the pipeline on
+houses in seconds (the tests do).
 """
 
 from __future__ import annotations
@@ -29,7 +31,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from multiprocessing import get_context
 from pathlib import Path
 from statistics import fmean
@@ -74,8 +76,14 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         "--extra",
         action="append",
         default=[],
-        metavar="NAME=COST,ROOM,LENGTH,GAIN",
+        metavar="NAME=COST,ROOM,LENGTH,GAIN[,TURN]",
         help="also run an unregistered rule with these TeacherRule weights (repeatable)",
+    )
+    p.add_argument(
+        "--sets",
+        default=None,
+        help=f"comma-separated building types (default: {','.join(SETS)}); a rule run on some "
+        "types only is reported on those",
     )
     p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
     p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
@@ -83,7 +91,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.agents.rl.teachers import TEACHERS
+    from realistic_indoor.agents.rl.teachers import TEACHERS, TeacherRule
     from realistic_indoor.cli import checkout_commit, run_folder, script_command
     from realistic_indoor.errors import ConfigError
     from realistic_indoor.evaluation import read_results, write_results
@@ -94,6 +102,11 @@ def main(argv: list[str] | None = None) -> int:
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="teacher_rules")
     if args.workers is not None and args.workers < 1:
         raise ConfigError(f"--workers must be an integer >= 1, not {args.workers}")
+    if args.sets:
+        sets = tuple(args.sets.split(","))
+        if [x for x in sets if x not in SETS] or len(set(sets)) != len(sets):
+            raise ConfigError(f"--sets {args.sets!r}: give distinct types among {', '.join(SETS)}")
+        setup = replace(setup, sets=sets)
     rules = args.rules.split(",") if args.rules else list(TEACHERS)
     unknown = [r for r in rules if r not in TEACHERS]
     if unknown:
@@ -105,7 +118,7 @@ def main(argv: list[str] | None = None) -> int:
         folder = out / "teacher_rules" / rule
         if (folder / "results.json").is_file():
             episodes, saved = read_results(folder / "results.json")
-            if saved.get("weights", asdict(weights)) != asdict(weights):
+            if {**asdict(TeacherRule()), **saved.get("weights", asdict(weights))} != asdict(weights):
                 raise ConfigError(
                     f"{folder}: results of the rule {rule!r} with other weights ({saved['weights']}); "
                     "give this one another name, or remove the folder to run it again"
@@ -133,7 +146,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
-    """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN`` options, by name.
+    """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` options, by name.
 
     Raises:
         ConfigError: For a malformed option, a name already registered or a name given twice.
@@ -148,10 +161,15 @@ def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
             values = [float(v) for v in weights.split(",")]
         except ValueError:
             values = []
-        if not name or name in registered or len(values) != 4 or not all(math.isfinite(v) for v in values):
+        if (
+            not name
+            or name in registered
+            or len(values) not in (4, 5)
+            or not all(math.isfinite(v) for v in values)
+        ):
             raise ConfigError(
-                f"--extra {spec!r}: give a new name and four numbers, NAME=COST,ROOM,LENGTH,GAIN "
-                "(e.g. area=1,1,0,2); registered names are taken"
+                f"--extra {spec!r}: give a new name and four or five numbers, "
+                "NAME=COST,ROOM,LENGTH,GAIN[,TURN] (e.g. area=1,1,0,2); registered names are taken"
             )
         if name in out:
             raise ConfigError(f"--extra {name!r} is given twice; give each rule one name")

@@ -67,6 +67,19 @@ def test_teacher_rule__a_gain_weight_trades_unobserved_area_against_path_cost():
     assert TeacherRule().choose(flat, mask) == 0  # no gain term: the nearer
 
 
+def test_teacher_rule__a_turn_weight_charges_a_goal_behind_the_robot():
+    from realistic_indoor.agents.rl.teachers import TeacherRule
+
+    # 5 m straight behind (cos -1) against 8 m straight ahead (cos 1)
+    flat, mask = _rows({"path_cost": 0.5, "cos_bearing": -1.0}, {"path_cost": 0.8, "cos_bearing": 1.0})
+    assert TeacherRule(turn_weight=0.5).choose(flat, mask) == 1  # 0.5 + 0.5 = 1.0 against 0.8
+    assert TeacherRule(turn_weight=0.2).choose(flat, mask) == 0  # 0.5 + 0.2 = 0.7 against 0.8
+    # abeam (cos 0) pays half: 0.6 + 0.25 = 0.85 against 0.8
+    flat, mask = _rows({"path_cost": 0.6, "cos_bearing": 0.0}, {"path_cost": 0.8, "cos_bearing": 1.0})
+    assert TeacherRule(turn_weight=0.5).choose(flat, mask) == 1
+    assert TeacherRule().choose(flat, mask) == 0  # no turn term: the nearer
+
+
 def test_teachers__are_the_classical_explorers_rules():
     from realistic_indoor.agents.structure import StructureConfig
     from realistic_indoor.agents.utility import UtilityConfig

@@ -64,6 +64,14 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
 
     with pytest.raises(ConfigError, match="results of the rule 'nearest' with other weights"):
         _load().main([*argv[:-1], "nearest=3,1,1,0"])
+    with pytest.raises(ConfigError, match="results of the rule 'nearest' with other weights"):
+        _load().main([*argv[:-1], "nearest=1,1,0,0,1"])  # a heading term is another rule
+    # results saved before the heading term existed (no turn_weight) are read back as its 0
+    path = tmp_path / "teacher_rules" / "nearest" / "results.json"
+    saved = json.loads(path.read_text())
+    del saved["meta"]["weights"]["turn_weight"]
+    path.write_text(json.dumps(saved))
+    assert _load().main([*argv, "--report-only"]) == 0
 
 
 def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
@@ -73,10 +81,12 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
     for argv, message in (
         (["--workers", "0"], "--workers must be an integer >= 1, not 0"),
         (["--rules", "oracle"], "--rules: unknown ['oracle']"),
-        (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four numbers"),
+        (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four or five numbers"),
         (["--extra", "frontier=1,1,0,0"], "--extra 'frontier=1,1,0,0': give a new name"),
         (["--extra", "area=1,1,0,x"], "NAME=COST,ROOM,LENGTH,GAIN"),
         (["--extra", "area=1,1,0,2", "--extra", "area=1,1,0,3"], "--extra 'area' is given twice"),
+        (["--extra", "turn=1,1,0,0,1,2"], "four or five numbers"),
+        (["--sets", "schools,castles"], "--sets 'schools,castles': give distinct types among"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

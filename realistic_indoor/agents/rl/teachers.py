@@ -37,19 +37,24 @@ class TeacherRule:
     """A candidate's score, the lowest taken.
 
     ``cost_weight * path_cost * (room_factor if in a room) - length_weight * size
-    - gain_weight * unobserved``, in the ``candidates`` observation's units.
+    - gain_weight * unobserved + turn_weight * (1 - cos_bearing) / 2``, in the ``candidates``
+    observation's units.
 
     Attributes:
         cost_weight: Weight of the path cost (per 10 m of clear floor, the feature's unit).
         room_factor: Factor on the cost of a frontier off the corridors and halls.
         length_weight: Weight of the frontier's length (per 10 m).
         gain_weight: Weight of the unobserved area near the frontier (per 10 m2).
+        turn_weight: Score added for a goal straight behind the robot's heading (half of it for
+            one abeam, none ahead): a preference for keeping on, against back-tracking. No
+            registered rule uses it (tried on the tuning seeds, see ``experiments/teacher_rules.py``).
     """
 
     cost_weight: float = 1.0
     room_factor: float = 1.0
     length_weight: float = 0.0
     gain_weight: float = 0.0
+    turn_weight: float = 0.0
 
     def choose(self, candidates: np.ndarray, mask: np.ndarray) -> int:
         """The candidate this rule takes.
@@ -67,6 +72,8 @@ class TeacherRule:
         score = self.cost_weight * rows[:, F.index("path_cost")] * factor
         score = score - self.length_weight * rows[:, F.index("size")]
         score = score - self.gain_weight * rows[:, F.index("unobserved")]
+        if self.turn_weight:
+            score = score + self.turn_weight * (1.0 - rows[:, F.index("cos_bearing")]) / 2.0
         return int(np.argmin(np.where(mask, score, np.inf)))
 
 

@@ -21,9 +21,8 @@ refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` (repeatable) runs a rule
 with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the registered
 rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give the same
 option again to keep it in a later report; a fifth number, the heading term ``turn_weight``,
-``--extra su-turn=3,2,1,0,1.5``). ``--sets schools`` runs the rules new to the folder on some
-building types only (the report shows each rule where it ran). ``--small`` runs the pipeline on
-houses in seconds (the tests do).
+``--extra su-turn=3,2,1,0,1.5``). ``--small`` runs the pipeline on houses in seconds (the tests
+do).
 """
 
 from __future__ import annotations
@@ -31,7 +30,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import asdict, dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
 from statistics import fmean
@@ -79,12 +78,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         metavar="NAME=COST,ROOM,LENGTH,GAIN[,TURN]",
         help="also run an unregistered rule with these TeacherRule weights (repeatable)",
     )
-    p.add_argument(
-        "--sets",
-        default=None,
-        help=f"comma-separated building types (default: {','.join(SETS)}); a rule run on some "
-        "types only is reported on those",
-    )
+
     p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
     p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
     return p.parse_args(argv)
@@ -102,11 +96,6 @@ def main(argv: list[str] | None = None) -> int:
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="teacher_rules")
     if args.workers is not None and args.workers < 1:
         raise ConfigError(f"--workers must be an integer >= 1, not {args.workers}")
-    if args.sets:
-        sets = tuple(args.sets.split(","))
-        if [x for x in sets if x not in SETS] or len(set(sets)) != len(sets):
-            raise ConfigError(f"--sets {args.sets!r}: give distinct types among {', '.join(SETS)}")
-        setup = replace(setup, sets=sets)
     rules = args.rules.split(",") if args.rules else list(TEACHERS)
     unknown = [r for r in rules if r not in TEACHERS]
     if unknown:

@@ -86,7 +86,6 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
         (["--extra", "area=1,1,0,x"], "NAME=COST,ROOM,LENGTH,GAIN"),
         (["--extra", "area=1,1,0,2", "--extra", "area=1,1,0,3"], "--extra 'area' is given twice"),
         (["--extra", "turn=1,1,0,0,1,2"], "four or five numbers"),
-        (["--sets", "schools,castles"], "--sets 'schools,castles': give distinct types among"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

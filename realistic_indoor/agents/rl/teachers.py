@@ -46,8 +46,10 @@ class TeacherRule:
         length_weight: Weight of the frontier's length (per 10 m).
         gain_weight: Weight of the unobserved area near the frontier (per 10 m2).
         turn_weight: Score added for a goal straight behind the robot's heading (half of it for
-            one abeam, none ahead): a preference for keeping on, against back-tracking. No
-            registered rule uses it (tried on the tuning seeds, see ``experiments/teacher_rules.py``).
+            one abeam, none ahead; the straight-line bearing, not the path's first leg), in the
+            score's units: ``turn_weight / cost_weight`` times 10 m of path. A preference for
+            keeping on, against back-tracking; no registered rule uses it (tried on the tuning
+            seeds, see ``experiments/teacher_rules.py``).
     """
 
     cost_weight: float = 1.0

@@ -79,7 +79,7 @@ def test_small_run__the_same_model_trained_twice_differs_from_itself_by_nothing(
     assert {e["agent"] for e in data["episodes"]} == {"learned_random_seed0"}
     report = (out / "learned_seeds.md").read_text()
     assert _row(report, "| houses | 2 |")[4] == "+0.000 [+0.000, +0.000]"
-    assert "| houses | **random (1 seeds)** | 2 |" in report
+    assert "| houses | **random (1 seed)** | 2 |" in report
 
 
 def test_ppo_track__its_own_models_agent_and_labels(tmp_path):

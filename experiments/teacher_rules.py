@@ -17,12 +17,12 @@ Full run (about 8 minutes per rule on 2 idle cores)::
 
 writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
 results are there already is not run again (one saved with other weights under the same name is
-refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` (repeatable) runs a rule that is not registered,
-with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the registered
-rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give the same
-option again to keep it in a later report; a fifth number, the heading term ``turn_weight``,
-``--extra su-turn=3,2,1,0,1.5``). ``--small`` runs the pipeline on houses in seconds (the tests
-do).
+refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` (repeatable) runs a rule that is not
+registered, with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the
+registered rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give
+the same option again to keep it in a later report; a fifth number is the heading term
+``turn_weight``, ``--extra su-turn=3,2,1,0,1.5``). ``--small`` runs the pipeline on houses in
+seconds (the tests do).
 """
 
 from __future__ import annotations
@@ -78,7 +78,6 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         metavar="NAME=COST,ROOM,LENGTH,GAIN[,TURN]",
         help="also run an unregistered rule with these TeacherRule weights (repeatable)",
     )
-
     p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
     p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
     return p.parse_args(argv)

@@ -308,8 +308,10 @@ def analyse(results: list, meta: dict[str, Any]) -> str:
             mine = values.get((s, m))
             if not mine:
                 continue
-            n = len(kinds.get(m, ()))
-            label = f"**{m} ({n} seed{'s' if n != 1 else ''})**" if m in KINDS else m
+            label = m
+            if m in KINDS:
+                n = len(kinds[m])
+                label = f"**{m} ({n} seed{'s' if n != 1 else ''})**"
             cells = [s, label, str(len(mine)), f"{fmean(mine.values()):.3f}"]
             cells += [_paired(mine, values.get((s, b), {})) for b in CLASSICAL]
             lines.append("| " + " | ".join(cells) + " |")

@@ -74,8 +74,7 @@ class TeacherRule:
         score = self.cost_weight * rows[:, F.index("path_cost")] * factor
         score = score - self.length_weight * rows[:, F.index("size")]
         score = score - self.gain_weight * rows[:, F.index("unobserved")]
-        if self.turn_weight:
-            score = score + self.turn_weight * (1.0 - rows[:, F.index("cos_bearing")]) / 2.0
+        score = score + self.turn_weight * (1.0 - rows[:, F.index("cos_bearing")]) / 2.0
         return int(np.argmin(np.where(mask, score, np.inf)))
 
 

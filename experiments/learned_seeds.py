@@ -30,7 +30,10 @@ rule (``realistic-indoor train --preset learned --teacher structure-utility``): 
 ``learned_su_<kind>_seed<N>`` in ``experiments/results/learned_su_models/``, reported in
 ``learned_su_seeds.md``; ``--track learned-structure-utility-area``, of the one cloned from the
 ``structure-utility-area`` rule: models ``learned_sua_<kind>_seed<N>`` in
-``experiments/results/learned_sua_models/``, reported in ``learned_sua_seeds.md``.
+``experiments/results/learned_sua_models/``, reported in ``learned_sua_seeds.md``; ``--track
+learned-structure-utility-area-short``, of the recipe's rule (``structure-utility-area-short``),
+whose realistic seed-0 model is the package's: models ``learned_suas_<kind>_seed<N>`` in
+``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``.
 """
 
 from __future__ import annotations
@@ -122,15 +125,25 @@ TRACKS = {
         "learned_sua_seeds",
         "The learned explorer cloned from the structure-utility-area rule: realistic-trained and random-trained",
         "learned (structure-utility-area)",
+        "learned --teacher structure-utility-area",
+        teacher="structure-utility-area",
+    ),
+    "learned-structure-utility-area-short": Track(
+        "learned_suas",
+        "learned",
+        ROOT / "experiments" / "results" / "learned_suas_models",
+        "learned_suas_seeds",
+        "The learned explorer cloned from the structure-utility-area-short rule: realistic-trained and random-trained",
+        "learned (structure-utility-area-short)",
         "learned",
         # the realistic seed-0 model is the package's own (the recipe's rule)
-        {"learned_sua_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
-        "structure-utility-area",
+        {"learned_suas_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+        "structure-utility-area-short",
     ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, and the
-learned explorer cloned from the ``structure-utility`` and ``structure-utility-area`` rules
-(``--teacher``) instead of ``structure``."""
+learned explorer cloned from the ``structure-utility``, ``structure-utility-area`` and
+``structure-utility-area-short`` rules (``--teacher``) instead of ``structure``."""
 NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (

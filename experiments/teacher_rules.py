@@ -17,12 +17,20 @@ Full run (about 8 minutes per rule on 2 idle cores)::
 
 writes ``teacher_rules.md`` and each rule's episodes in ``teacher_rules/<rule>/``; a rule whose
 results are there already is not run again (one saved with other weights under the same name is
-refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` (repeatable) runs a rule that is not
-registered, with those weights of :class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the
-registered rules were searched for (``--extra area=1,1,0,2`` is the information gain alone; give
-the same option again to keep it in a later report; a fifth number is the heading term
-``turn_weight``, ``--extra su-turn=3,2,1,0,1.5``). ``--small`` runs the pipeline on houses in
-seconds (the tests do).
+refused). ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN[,SHORT[,SHORT_M]]]`` (repeatable) runs a
+rule that is not registered, with those weights of
+:class:`~realistic_indoor.agents.rl.teachers.TeacherRule`, as the registered rules were searched
+for (``--extra area=1,1,0,2`` is the information gain alone; give the same option again to keep
+it in a later report; a fifth number is the heading term ``turn_weight``, ``--extra
+su-turn=3,2,1,0,1.5``; a sixth and seventh are ``short_factor`` and ``short_m``, ``--extra
+short=1,1,0,0,0,2,1``). ``--episodes N`` runs N tuning seeds per set (900 on) and ``--sets``
+some of the sets: results are read back only for the same seeds and sets, so a longer run goes to
+its own ``--out``, as the recipe's rule was chosen on 30 seeds::
+
+    .venv/bin/python experiments/teacher_rules.py --out experiments/results/tuning_30 --episodes 30 \
+        --sets schools,houses --rules structure-utility-area,structure-utility-area-short
+
+``--small`` runs the pipeline on houses in seconds (the tests do).
 """
 
 from __future__ import annotations
@@ -30,7 +38,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from multiprocessing import get_context
 from pathlib import Path
 from statistics import fmean
@@ -75,12 +83,41 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         "--extra",
         action="append",
         default=[],
-        metavar="NAME=COST,ROOM,LENGTH,GAIN[,TURN]",
+        metavar="NAME=COST,ROOM,LENGTH,GAIN[,TURN[,SHORT[,SHORT_M]]]",
         help="also run an unregistered rule with these TeacherRule weights (repeatable)",
     )
+    p.add_argument(
+        "--episodes",
+        type=int,
+        default=None,
+        help="tuning seeds per set, from 900 (default 10; 2 with --small)",
+    )
+    p.add_argument("--sets", default=None, help=f"comma-separated sets of {', '.join(SETS)} (default: all)")
     p.add_argument("--workers", type=int, default=None, help="processes (default 2)")
     p.add_argument("--report-only", action="store_true", help="redo the report from the saved results")
     return p.parse_args(argv)
+
+
+def sized(base: Setup, episodes: int | None, sets: str | None) -> Setup:
+    """``base`` with the ``--episodes`` and ``--sets`` of the command line.
+
+    Raises:
+        ConfigError: For a count below 1 or an unknown set.
+    """
+    from realistic_indoor.errors import ConfigError
+
+    if episodes is not None and episodes < 1:
+        raise ConfigError(f"--episodes must be an integer >= 1, not {episodes}")
+    chosen = tuple(sets.split(",")) if sets else base.sets
+    unknown = [s for s in chosen if s not in SETS]
+    if unknown:
+        raise ConfigError(f"--sets: unknown {unknown}; sets: {', '.join(SETS)}")
+    return replace(base, episodes=episodes or base.episodes, sets=chosen)
+
+
+def sizing(args: argparse.Namespace) -> list[str]:
+    """The ``--episodes`` and ``--sets`` options given, for the report's command."""
+    return [f"--{k} {getattr(args, k)}" for k in ("episodes", "sets") if getattr(args, k) is not None]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -91,7 +128,7 @@ def main(argv: list[str] | None = None) -> int:
     from realistic_indoor.files import write_text
 
     args = parse_args(argv)
-    setup = SMALL if args.small else FULL
+    setup = sized(SMALL if args.small else FULL, args.episodes, args.sets)
     out = run_folder(args.out, RUNS, small=args.small, report_only=args.report_only, name="teacher_rules")
     if args.workers is not None and args.workers < 1:
         raise ConfigError(f"--workers must be an integer >= 1, not {args.workers}")
@@ -111,6 +148,13 @@ def main(argv: list[str] | None = None) -> int:
                     f"{folder}: results of the rule {rule!r} with other weights ({saved['weights']}); "
                     "give this one another name, or remove the folder to run it again"
                 )
+            ran_on = (saved.get("seeds"), saved.get("sets"))
+            if ran_on != ([setup.seed, setup.seed + setup.episodes - 1], list(setup.sets)):
+                raise ConfigError(
+                    f"{folder}: results of the rule {rule!r} on seeds {ran_on[0]} of {ran_on[1]}, "
+                    f"not {setup.episodes} seeds of {list(setup.sets)}; give the --episodes and --sets "
+                    "they ran with, or another --out"
+                )
             results += episodes
             continue
         if args.report_only:
@@ -127,14 +171,15 @@ def main(argv: list[str] | None = None) -> int:
         }
         write_results(ran, folder, meta)
         results += ran
-    report = analyse(results, args.extra)
+    given = [*(["--small"] if args.small else []), *([f"--out {args.out}"] if args.out else [])]
+    report = analyse(results, [*given, *sizing(args), *(f"--extra {e}" for e in args.extra)])
     write_text(out / "teacher_rules.md", report)
     print(report)
     return 0
 
 
 def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
-    """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN]`` options, by name.
+    """The rules of ``--extra NAME=COST,ROOM,LENGTH,GAIN[,TURN[,SHORT[,SHORT_M]]]`` options, by name.
 
     Raises:
         ConfigError: For a malformed option, a name already registered or a name given twice.
@@ -152,12 +197,13 @@ def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:
         if (
             not name
             or name in registered
-            or len(values) not in (4, 5)
+            or not 4 <= len(values) <= 7
             or not all(math.isfinite(v) for v in values)
         ):
             raise ConfigError(
-                f"--extra {spec!r}: give a new name and four or five numbers, "
-                "NAME=COST,ROOM,LENGTH,GAIN[,TURN] (e.g. area=1,1,0,2); registered names are taken"
+                f"--extra {spec!r}: give a new name and four to seven numbers, "
+                "NAME=COST,ROOM,LENGTH,GAIN[,TURN[,SHORT[,SHORT_M]]] (e.g. area=1,1,0,2); "
+                "registered names are taken"
             )
         if name in out:
             raise ConfigError(f"--extra {name!r} is given twice; give each rule one name")
@@ -203,16 +249,17 @@ def _episode(job: tuple[Any, Any]) -> Any:
         env.close()
 
 
-def analyse(results: list, extra: list[str] | tuple[str, ...] = ()) -> str:
+def analyse(results: list, options: list[str] | tuple[str, ...] = ()) -> str:
     """The report: mean AUC per rule and set, paired differences from the reference rules.
 
     Args:
         results: The episodes of every rule.
-        extra: The ``--extra`` options of the run, for the command that regenerates the report.
+        options: The run's options (``--out experiments/results``, ``--episodes 30``, ``--extra
+            NAME=...``), for the command that regenerates the report.
     """
     from realistic_indoor.evaluation.aggregate import bootstrap_mean
 
-    options = "".join(f" --extra {e}" for e in extra)
+    options = "".join(f" {o}" for o in options)
 
     values: dict[tuple[str, str], dict[int, float]] = {}
     for r in results:
@@ -222,14 +269,14 @@ def analyse(results: list, extra: list[str] | tuple[str, ...] = ()) -> str:
     lines = [
         "# The teacher rules on the tuning seeds",
         "",
-        f"Regenerate with `.venv/bin/python experiments/teacher_rules.py --out experiments/results{options}` "
+        f"Regenerate with `.venv/bin/python experiments/teacher_rules.py{options}` "
         "(a rule already run is read back; `--report-only` only rewrites this report).",
         "",
         "Coverage AUC of each rule of `agents.rl.teachers.TEACHERS` (and of the `--extra` weights) behind "
         "the learned explorer's agent "
         "(the same candidates, decisions and navigator), generated buildings at their default sizes and "
-        "step limits, tuning seeds from 900. A difference is paired by building: mean and 95% bootstrap "
-        "interval (* the interval excludes 0).",
+        "step limits, tuning seeds from 900 (the episodes column counts them). A difference is paired "
+        "by building: mean and 95% bootstrap interval (* the interval excludes 0).",
         "",
         "| set | rule | episodes | AUC | minus frontier | minus structure |",
         "|---|---|---|---|---|---|",

@@ -39,7 +39,9 @@ from realistic_indoor.navigation.regions import RegionConfig, find_regions
 from realistic_indoor.navigation.spec import RobotSpec
 
 __all__ = [
+    "AREA_UNIT_M2",
     "CANDIDATE_FEATURES",
+    "LENGTH_UNIT_M",
     "MACRO_ACTIONS",
     "MACRO_ACTION_TYPES",
     "Candidates",
@@ -73,9 +75,9 @@ corridors and halls the robot has recognised on its map (the structure explorer'
 frontiers); 1 if it is a detected victim (whose frontier columns are 0). Lengths and areas are
 capped at 100 units. Rows of candidates that do not exist are 0."""
 
-_LENGTH_UNIT_M = 10.0
+LENGTH_UNIT_M = 10.0
 """Metres per unit of the length features of the ``candidates`` observation."""
-_AREA_UNIT_M2 = 10.0
+AREA_UNIT_M2 = 10.0
 """Square metres per unit of the area feature of the ``candidates`` observation."""
 _MAX_LENGTH = 100.0
 """Length features are capped at this many units (1 km): the observation space is bounded."""
@@ -224,12 +226,12 @@ def candidate_features(candidates: Candidates | None, pose: tuple[float, float, 
     bearing = np.arctan2(dy, dx) - heading
     n = c.count
     out[:n, 0] = 1.0
-    out[:n, 1] = np.minimum(c.cost_m / _LENGTH_UNIT_M, _MAX_LENGTH)
-    out[:n, 2] = np.minimum(np.hypot(dx, dy) / _LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 1] = np.minimum(c.cost_m / LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 2] = np.minimum(np.hypot(dx, dy) / LENGTH_UNIT_M, _MAX_LENGTH)
     out[:n, 3] = np.cos(bearing)
     out[:n, 4] = np.sin(bearing)
-    out[:n, 5] = np.minimum(c.size_m / _LENGTH_UNIT_M, _MAX_LENGTH)
-    out[:n, 6] = np.minimum(c.unobserved_m2 / _AREA_UNIT_M2, _MAX_LENGTH)
+    out[:n, 5] = np.minimum(c.size_m / LENGTH_UNIT_M, _MAX_LENGTH)
+    out[:n, 6] = np.minimum(c.unobserved_m2 / AREA_UNIT_M2, _MAX_LENGTH)
     out[:n, 7] = c.in_room
     out[:n, 8] = np.array(c.victim, dtype=np.float32)
     return out.ravel()

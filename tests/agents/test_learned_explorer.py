@@ -80,6 +80,21 @@ def test_teacher_rule__a_turn_weight_charges_a_goal_behind_the_robot():
     assert TeacherRule().choose(flat, mask) == 0  # no turn term: the nearer
 
 
+def test_teacher_rule__a_short_factor_puts_off_a_sliver_of_frontier():
+    from realistic_indoor.agents.rl.teachers import TeacherRule
+
+    # 5 m to a 0.5 m sliver against 8 m to a 3 m frontier (size in units of 10 m)
+    flat, mask = _rows({"path_cost": 0.5, "size": 0.05}, {"path_cost": 0.8, "size": 0.3})
+    assert TeacherRule(short_factor=2.0).choose(flat, mask) == 1  # 1.0 against 0.8
+    assert TeacherRule(short_factor=1.5).choose(flat, mask) == 0  # 0.75 against 0.8
+    assert TeacherRule(short_factor=2.0, short_m=0.4).choose(flat, mask) == 0  # 0.5 m is not short
+    assert TeacherRule().choose(flat, mask) == 0  # no factor: the nearer
+    # it multiplies with the room factor: a short room frontier at 2 m costs 0.2 * 2 * 2 = 0.8
+    flat, mask = _rows({"path_cost": 0.2, "size": 0.05, "in_room": 1}, {"path_cost": 0.7, "size": 0.3})
+    assert TeacherRule(room_factor=2.0, short_factor=2.0).choose(flat, mask) == 1
+    assert TeacherRule(room_factor=2.0).choose(flat, mask) == 0  # 0.4 against 0.7
+
+
 def test_teachers__are_the_classical_explorers_rules():
     from realistic_indoor.agents.structure import StructureConfig
     from realistic_indoor.agents.utility import UtilityConfig
@@ -205,14 +220,14 @@ def test_committed_model__came_from_the_recipe_and_its_record_is_beside_it():
 
     from realistic_indoor.agents.rl.learned import learned_preset
 
-    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_sua_models"
-    record = json.loads((folder / "learned_sua_realistic_seed0.json").read_text())
+    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_suas_models"
+    record = json.loads((folder / "learned_suas_realistic_seed0.json").read_text())
     assert record["config"] == learned_preset("learned").to_dict()  # the default recipe, seed 0
-    assert record["config"]["teacher"] == "structure-utility-area"
-    log = (folder / "learned_sua_realistic_seed0.log").read_text()
-    assert f"saved runs/learned_sua_realistic_seed0.zip after {record['seconds']:.0f} s" in log
+    assert record["config"]["teacher"] == "structure-utility-area-short"
+    log = (folder / "learned_suas_realistic_seed0.log").read_text()
+    assert f"saved runs/learned_suas_realistic_seed0.zip after {record['seconds']:.0f} s" in log
     # the study's models keep no copy: the package's file is the one
-    assert not (folder / "learned_sua_realistic_seed0.zip").exists()
+    assert not (folder / "learned_suas_realistic_seed0.zip").exists()
 
 
 @pytest.mark.slow

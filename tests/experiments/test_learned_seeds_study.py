@@ -125,17 +125,26 @@ def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules
         module.find_models(tmp_path, track)
 
 
-def test_structure_utility_area_track__its_seed_0_model_is_the_package_one(tmp_path):
+def test_recipe_track__its_seed_0_model_is_the_package_one(tmp_path):
     from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL
+    from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER
 
     module = _load()
-    track = module.TRACKS["learned-structure-utility-area"]
-    (tmp_path / "learned_sua_realistic_seed0.json").write_text(
-        json.dumps({"config": {"teacher": "structure-utility-area"}})
+    track = module.TRACKS["learned-structure-utility-area-short"]
+    assert track.teacher == DEFAULT_TEACHER  # the recipe's rule
+    (tmp_path / "learned_suas_realistic_seed0.json").write_text(
+        json.dumps({"config": {"teacher": "structure-utility-area-short"}})
     )
-    (tmp_path / "learned_sua_random_seed0.zip").write_bytes(b"")
+    (tmp_path / "learned_suas_random_seed0.zip").write_bytes(b"")
     found = module.find_models(tmp_path, track)
-    assert list(found) == ["learned_sua_realistic_seed0", "learned_sua_random_seed0"]
-    assert found["learned_sua_realistic_seed0"] == DEFAULT_MODEL
-    # the structure track has no committed model any more: its seed-0 model lies in its folder
+    assert list(found) == ["learned_suas_realistic_seed0", "learned_suas_random_seed0"]
+    assert found["learned_suas_realistic_seed0"] == DEFAULT_MODEL
+    # the earlier rules' tracks have no committed model any more: their seed-0 models lie in
+    # their folders
     assert module.TRACKS["learned"].committed == {}
+    assert module.TRACKS["learned-structure-utility-area"].committed == {}
+    sua = module.find_models(
+        module.TRACKS["learned-structure-utility-area"].models,
+        module.TRACKS["learned-structure-utility-area"],
+    )
+    assert sua["learned_sua_realistic_seed0"].parent.name == "learned_sua_models"

@@ -59,6 +59,8 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
     assert (tmp_path / "teacher_rules" / "structure" / "results.json").is_file()
     assert "| houses | structure | 2 |" in (tmp_path / "teacher_rules.md").read_text()
     assert "| houses | nearest | 2 |" in (tmp_path / "teacher_rules.md").read_text()
+    command = f"teacher_rules.py --small --out {tmp_path} --extra nearest=1,1,0,0`"
+    assert command in (tmp_path / "teacher_rules.md").read_text()  # the report says how to redo it
     # the same name with other weights is refused, not read back as if it were the same rule
     from realistic_indoor.errors import ConfigError
 
@@ -66,6 +68,11 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
         _load().main([*argv[:-1], "nearest=3,1,1,0"])
     with pytest.raises(ConfigError, match="results of the rule 'nearest' with other weights"):
         _load().main([*argv[:-1], "nearest=1,1,0,0,1"])  # a heading term is another rule
+    # nor read back as if they had run on other seeds or sets
+    with pytest.raises(ConfigError, match=r"on seeds \[900, 901\] of \['houses'\], not 3 seeds of"):
+        _load().main([*argv, "--episodes", "3"])
+    with pytest.raises(ConfigError, match=r"not 2 seeds of \['offices', 'houses'\]"):
+        _load().main([*argv, "--sets", "offices,houses"])
     # results saved before the heading term existed (no turn_weight) are read back as its 0
     path = tmp_path / "teacher_rules" / "nearest" / "results.json"
     saved = json.loads(path.read_text())
@@ -81,11 +88,13 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
     for argv, message in (
         (["--workers", "0"], "--workers must be an integer >= 1, not 0"),
         (["--rules", "oracle"], "--rules: unknown ['oracle']"),
-        (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four or five numbers"),
+        (["--extra", "area=1,2"], "--extra 'area=1,2': give a new name and four to seven numbers"),
         (["--extra", "frontier=1,1,0,0"], "--extra 'frontier=1,1,0,0': give a new name"),
         (["--extra", "area=1,1,0,x"], "NAME=COST,ROOM,LENGTH,GAIN"),
         (["--extra", "area=1,1,0,2", "--extra", "area=1,1,0,3"], "--extra 'area' is given twice"),
-        (["--extra", "turn=1,1,0,0,1,2"], "four or five numbers"),
+        (["--extra", "short=1,1,0,0,0,2,1,5"], "four to seven numbers"),
+        (["--episodes", "0"], "--episodes must be an integer >= 1, not 0"),
+        (["--sets", "schools,attics"], "--sets: unknown ['attics']; sets: offices, schools, houses"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

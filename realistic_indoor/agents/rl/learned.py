@@ -9,9 +9,10 @@ evaluation's sizes and step limits (the generators' default areas, the ids' own 
 The recipe, :func:`train_learned`:
 
 1. **Behaviour cloning** from a classical explorer's rule, which the candidates' features
-   express exactly (:attr:`LearnedConfig.teacher`, by default ``structure-utility-area``: three
-   times the path cost, doubled for a frontier in a room, less the frontier's length and twice
-   the unobserved area near it; a detected victim first; :mod:`~realistic_indoor.agents.rl.teachers`,
+   express exactly (:attr:`LearnedConfig.teacher`, by default ``structure-utility-area-short``:
+   three times the path cost, doubled for a frontier in a room and doubled for one shorter than
+   1 m, less the frontier's length and twice the unobserved area near it; a detected victim
+   first; :mod:`~realistic_indoor.agents.rl.teachers`,
    where the rules were compared on tuning seeds): decisions are collected with that rule
    choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to its choices
    (cross-entropy) and the critic to the discounted returns that followed.

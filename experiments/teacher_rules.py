@@ -116,8 +116,10 @@ def sized(base: Setup, episodes: int | None, sets: str | None) -> Setup:
 
 
 def sizing(args: argparse.Namespace) -> list[str]:
-    """The ``--episodes`` and ``--sets`` options given, for the report's command."""
-    return [f"--{k} {getattr(args, k)}" for k in ("episodes", "sets") if getattr(args, k) is not None]
+    """The ``--episodes``, ``--sets`` and ``--rules`` options given, for the report's command."""
+    return [
+        f"--{k} {getattr(args, k)}" for k in ("episodes", "sets", "rules") if getattr(args, k) is not None
+    ]
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -59,7 +59,7 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
     assert (tmp_path / "teacher_rules" / "structure" / "results.json").is_file()
     assert "| houses | structure | 2 |" in (tmp_path / "teacher_rules.md").read_text()
     assert "| houses | nearest | 2 |" in (tmp_path / "teacher_rules.md").read_text()
-    command = f"teacher_rules.py --small --out {tmp_path} --extra nearest=1,1,0,0`"
+    command = f"teacher_rules.py --small --out {tmp_path} --rules frontier,structure --extra nearest=1,1,0,0`"
     assert command in (tmp_path / "teacher_rules.md").read_text()  # the report says how to redo it
     # the same name with other weights is refused, not read back as if it were the same rule
     from realistic_indoor.errors import ConfigError

@@ -96,7 +96,7 @@ TRACKS = {
         "learned_seeds",
         "The learned explorer across training seeds: realistic-trained and random-trained",
         "learned",
-        "learned",
+        "learned --teacher structure",
         teacher="structure",
     ),
     "ppo-global-map": Track(

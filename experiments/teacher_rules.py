@@ -108,11 +108,14 @@ def sized(base: Setup, episodes: int | None, sets: str | None) -> Setup:
 
     if episodes is not None and episodes < 1:
         raise ConfigError(f"--episodes must be an integer >= 1, not {episodes}")
-    chosen = tuple(sets.split(",")) if sets else base.sets
-    unknown = [s for s in chosen if s not in SETS]
-    if unknown:
-        raise ConfigError(f"--sets: unknown {unknown}; sets: {', '.join(SETS)}")
-    return replace(base, episodes=episodes or base.episodes, sets=chosen)
+    if sets is None:
+        return replace(base, episodes=episodes or base.episodes)
+    asked = [s for s in sets.split(",") if s]
+    unknown = [s for s in asked if s not in SETS]
+    if unknown or not asked:
+        raise ConfigError(f"--sets: unknown {unknown or [sets]}; sets: {', '.join(SETS)}")
+    # in the order of SETS, each once: the same sets always read back as the same run
+    return replace(base, episodes=episodes or base.episodes, sets=tuple(s for s in SETS if s in asked))
 
 
 def sizing(args: argparse.Namespace) -> list[str]:
@@ -123,10 +126,10 @@ def sizing(args: argparse.Namespace) -> list[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from realistic_indoor.agents.rl.teachers import TEACHERS, TeacherRule
+    from realistic_indoor.agents.rl.teachers import TEACHERS
     from realistic_indoor.cli import checkout_commit, run_folder, script_command
     from realistic_indoor.errors import ConfigError
-    from realistic_indoor.evaluation import read_results, write_results
+    from realistic_indoor.evaluation import write_results
     from realistic_indoor.files import write_text
 
     args = parse_args(argv)
@@ -140,24 +143,13 @@ def main(argv: list[str] | None = None) -> int:
         raise ConfigError(f"--rules: unknown {unknown}; rules: {', '.join(TEACHERS)}")
     known = {name: TEACHERS[name] for name in (*REFERENCES, *rules)}
     known.update(parse_extra(args.extra, TEACHERS))
+    # every saved rule is checked before any is run: a mismatch costs no minutes of running
+    saved = {rule: read_back(out / "teacher_rules" / rule, rule, w, setup) for rule, w in known.items()}
     results: list = []
     for rule, weights in known.items():
         folder = out / "teacher_rules" / rule
-        if (folder / "results.json").is_file():
-            episodes, saved = read_results(folder / "results.json")
-            if {**asdict(TeacherRule()), **saved.get("weights", asdict(weights))} != asdict(weights):
-                raise ConfigError(
-                    f"{folder}: results of the rule {rule!r} with other weights ({saved['weights']}); "
-                    "give this one another name, or remove the folder to run it again"
-                )
-            ran_on = (saved.get("seeds"), saved.get("sets"))
-            if ran_on != ([setup.seed, setup.seed + setup.episodes - 1], list(setup.sets)):
-                raise ConfigError(
-                    f"{folder}: results of the rule {rule!r} on seeds {ran_on[0]} of {ran_on[1]}, "
-                    f"not {setup.episodes} seeds of {list(setup.sets)}; give the --episodes and --sets "
-                    "they ran with, or another --out"
-                )
-            results += episodes
+        if saved[rule] is not None:
+            results += saved[rule]
             continue
         if args.report_only:
             continue
@@ -170,6 +162,7 @@ def main(argv: list[str] | None = None) -> int:
             "weights": asdict(weights),
             "seeds": [setup.seed, setup.seed + setup.episodes - 1],
             "sets": list(setup.sets),
+            "env_kwargs": dict(setup.env_kwargs),
         }
         write_results(ran, folder, meta)
         results += ran
@@ -178,6 +171,36 @@ def main(argv: list[str] | None = None) -> int:
     write_text(out / "teacher_rules.md", report)
     print(report)
     return 0
+
+
+def read_back(folder: Path, rule: str, weights: Any, setup: Setup) -> list | None:
+    """The saved episodes of ``rule`` in ``folder`` (``None`` if none are saved).
+
+    Raises:
+        ConfigError: If they were run with other weights, or on other seeds, sets or episode
+            settings than ``setup``'s.
+    """
+    from realistic_indoor.agents.rl.teachers import TeacherRule
+    from realistic_indoor.errors import ConfigError
+    from realistic_indoor.evaluation import read_results
+
+    if not (folder / "results.json").is_file():
+        return None
+    episodes, saved = read_results(folder / "results.json")
+    if {**asdict(TeacherRule()), **saved.get("weights", asdict(weights))} != asdict(weights):
+        raise ConfigError(
+            f"{folder}: results of the rule {rule!r} with other weights ({saved['weights']}); "
+            "give this one another name, or remove the folder to run it again"
+        )
+    ran_on = (saved.get("seeds"), saved.get("sets"), saved.get("env_kwargs", {}))
+    wanted = ([setup.seed, setup.seed + setup.episodes - 1], list(setup.sets), dict(setup.env_kwargs))
+    if ran_on != wanted:
+        raise ConfigError(
+            f"{folder}: results of the rule {rule!r} on seeds {ran_on[0]} of {ran_on[1]} "
+            f"(episode settings {ran_on[2]}), not {setup.episodes} seeds of {list(setup.sets)} "
+            f"({wanted[2]}); give the --episodes and --sets they ran with, or another --out"
+        )
+    return episodes
 
 
 def parse_extra(specs: list[str], registered: dict[str, Any]) -> dict[str, Any]:

@@ -33,8 +33,8 @@ presets (measured on 2 CPU cores):
   global-map  the default, with the robot's whole map (global_map) and the share of the step
            limit left (time_left) in the policy's view; its environments run in sub-processes
   learned  the learned explorer on offices, schools and houses at their default sizes and
-           step limits: 20,000 decisions cloning the structure-utility-area rule (--teacher),
-           then 40,000 of MaskablePPO (--timesteps sets these; 26 to 39 minutes), then 2
+           step limits: 20,000 decisions cloning the structure-utility-area-short rule
+           (--teacher), then 40,000 of MaskablePPO (--timesteps sets these; 24 to 39 minutes), then 2
            episodes per agent and id
   learned-smoke  seconds, on houses: checks the learned explorer's set-up
 

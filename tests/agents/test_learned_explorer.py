@@ -100,6 +100,11 @@ def test_teachers__are_the_classical_explorers_rules():
     from realistic_indoor.agents.utility import UtilityConfig
 
     assert TEACHERS["structure"].room_factor == StructureConfig().room_factor
+    # the recipe's rule is structure-utility-area with slivers (shorter than 1 m) at twice the cost
+    from dataclasses import replace
+
+    short = replace(TEACHERS["structure-utility-area"], short_factor=2.0, short_m=1.0)
+    assert TEACHERS["structure-utility-area-short"] == short
     utility = UtilityConfig()
     assert utility.gain == "length"  # the rule's gain is the frontier's length
     assert (

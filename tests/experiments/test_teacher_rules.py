@@ -68,11 +68,16 @@ def test_teacher_rules__the_frontier_rule_is_the_nearest_frontier_explorer(tmp_p
         _load().main([*argv[:-1], "nearest=3,1,1,0"])
     with pytest.raises(ConfigError, match="results of the rule 'nearest' with other weights"):
         _load().main([*argv[:-1], "nearest=1,1,0,0,1"])  # a heading term is another rule
-    # nor read back as if they had run on other seeds or sets
-    with pytest.raises(ConfigError, match=r"on seeds \[900, 901\] of \['houses'\], not 3 seeds of"):
+    # nor read back as if they had run on other seeds, sets or episode settings
+    with pytest.raises(ConfigError, match=r"on seeds \[900, 901\] of \['houses'\] .*, not 3 seeds of"):
         _load().main([*argv, "--episodes", "3"])
     with pytest.raises(ConfigError, match=r"not 2 seeds of \['offices', 'houses'\]"):
-        _load().main([*argv, "--sets", "offices,houses"])
+        _load().main([*argv, "--sets", "houses,offices"])
+    full_length = ["--out", str(tmp_path), "--rules", "frontier", "--episodes", "2", "--sets", "houses"]
+    with pytest.raises(ConfigError, match=r"\(episode settings \{'max_steps': 60\}\), not 2 seeds"):
+        _load().main([*full_length, "--report-only"])
+    # the same seeds and sets, named explicitly (a set twice is once), are read back, not run again
+    assert _load().main([*argv, "--episodes", "2", "--sets", "houses,houses", "--report-only"]) == 0
     # results saved before the heading term existed (no turn_weight) are read back as its 0
     path = tmp_path / "teacher_rules" / "nearest" / "results.json"
     saved = json.loads(path.read_text())
@@ -95,6 +100,7 @@ def test_teacher_rules__bad_options_are_one_line_errors(tmp_path, capsys):
         (["--extra", "short=1,1,0,0,0,2,1,5"], "four to seven numbers"),
         (["--episodes", "0"], "--episodes must be an integer >= 1, not 0"),
         (["--sets", "schools,attics"], "--sets: unknown ['attics']; sets: offices, schools, houses"),
+        (["--sets", ","], "--sets: unknown [',']; sets: offices, schools, houses"),
     ):
         code = run_script(
             lambda argv=argv: module.main(["--small", "--out", str(tmp_path), *argv]), "teacher_rules"

@@ -118,11 +118,15 @@ def sized(base: Setup, episodes: int | None, sets: str | None) -> Setup:
     return replace(base, episodes=episodes or base.episodes, sets=tuple(s for s in SETS if s in asked))
 
 
-def sizing(args: argparse.Namespace) -> list[str]:
-    """The ``--episodes``, ``--sets`` and ``--rules`` options given, for the report's command."""
-    return [
-        f"--{k} {getattr(args, k)}" for k in ("episodes", "sets", "rules") if getattr(args, k) is not None
+def rerun_options(args: argparse.Namespace) -> list[str]:
+    """The options that say what ran (all but ``--workers``, ``--report-only``), for the report."""
+    given = ["--small"] if args.small else []
+    given += [
+        f"--{k} {getattr(args, k)}"
+        for k in ("out", "episodes", "sets", "rules")
+        if getattr(args, k) is not None
     ]
+    return given + [f"--extra {e}" for e in args.extra]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -143,11 +147,12 @@ def main(argv: list[str] | None = None) -> int:
         raise ConfigError(f"--rules: unknown {unknown}; rules: {', '.join(TEACHERS)}")
     known = {name: TEACHERS[name] for name in (*REFERENCES, *rules)}
     known.update(parse_extra(args.extra, TEACHERS))
+    folders = {rule: out / "teacher_rules" / rule for rule in known}
     # every saved rule is checked before any is run: a mismatch costs no minutes of running
-    saved = {rule: read_back(out / "teacher_rules" / rule, rule, w, setup) for rule, w in known.items()}
+    saved = {rule: read_back(folders[rule], rule, w, setup) for rule, w in known.items()}
     results: list = []
     for rule, weights in known.items():
-        folder = out / "teacher_rules" / rule
+        folder = folders[rule]
         if saved[rule] is not None:
             results += saved[rule]
             continue
@@ -166,8 +171,7 @@ def main(argv: list[str] | None = None) -> int:
         }
         write_results(ran, folder, meta)
         results += ran
-    given = [*(["--small"] if args.small else []), *([f"--out {args.out}"] if args.out else [])]
-    report = analyse(results, [*given, *sizing(args), *(f"--extra {e}" for e in args.extra)])
+    report = analyse(results, rerun_options(args))
     write_text(out / "teacher_rules.md", report)
     print(report)
     return 0

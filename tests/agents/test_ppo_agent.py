@@ -21,7 +21,7 @@ def model_path(tmp_path_factory):
     from realistic_indoor.agents.rl import train_ppo
 
     path = tmp_path_factory.mktemp("ppo") / "smoke.zip"
-    config = ppo_preset("smoke", env_ids=("HouseExplore-v0",))
+    config = ppo_preset("smoke", env_ids=("HouseExplore-v0",), n_envs=2)
     result = train_ppo(config, path, log=LOG_LINES.append, progress=True, log_every=128)
     assert result.model_path == path and result.timesteps >= 256
     return path
@@ -83,6 +83,10 @@ def test_ppo_config__rejects_bad_values():
         ppo_preset("huge")
     with pytest.raises(ConfigError, match="n_envs"):
         ppo_preset("default", n_envs=0)
+    # two environments over three ids: the third (houses) would never be trained on
+    with pytest.raises(ConfigError, match="HouseExplore-v0 would never be trained on") as error:
+        ppo_preset("default", n_envs=2)
+    assert "\n" not in str(error.value)
 
 
 @pytest.fixture(scope="module")
@@ -93,7 +97,11 @@ def global_map_model(tmp_path_factory):
     path = tmp_path_factory.mktemp("ppo_global") / "global.zip"
     preset = ppo_preset("global-map")
     config = ppo_preset(
-        "smoke", env_ids=("HouseExplore-v0",), obs_keys=preset.obs_keys, map_encoder=preset.map_encoder
+        "smoke",
+        env_ids=("HouseExplore-v0",),
+        n_envs=2,
+        obs_keys=preset.obs_keys,
+        map_encoder=preset.map_encoder,
     )
     train_ppo(config, path, log=lambda line: None)
     return path

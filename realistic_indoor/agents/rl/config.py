@@ -39,8 +39,9 @@ class PPOConfig:
     """A PPO training run (stable-baselines3, ``MultiInputPolicy`` on the Dict observation).
 
     Attributes:
-        env_ids: Registered ids trained on; the vectorised environments take them in turn, so
-            a mix of building types is trained on together.
+        env_ids: Registered ids trained on; the vectorised environments take them in turn (the
+            ``i``-th runs id ``i % len(env_ids)``), so a mix of building types is trained on
+            together: ``n_envs`` must be at least the number of ids.
         areas_m2: Floor area asked of each building type's generator while training (m2);
             smaller than the defaults, so that episodes see whole buildings. Types missing
             use the generator's default.
@@ -135,6 +136,12 @@ class PPOConfig:
         ):
             require_int("PPOConfig", name, getattr(self, name), 1)
         require_int("PPOConfig", "seed", self.seed, 0)
+        if self.n_envs < len(self.env_ids):
+            raise ConfigError(
+                f"PPOConfig.n_envs ({self.n_envs}) is below the number of env_ids ({len(self.env_ids)}): "
+                f"{', '.join(self.env_ids[self.n_envs :])} would never be trained on; use n_envs >= "
+                f"{len(self.env_ids)} (--n-envs) or fewer ids"
+            )
         require_positive("PPOConfig", "learning_rate", self.learning_rate, "")
         require_range("PPOConfig", "gamma", self.gamma, 0.0, 1.0, "")
         require_range("PPOConfig", "gae_lambda", self.gae_lambda, 0.0, 1.0, "")
@@ -170,7 +177,7 @@ PPO_PRESETS: dict[str, dict[str, Any]] = {
     },
     "smoke": {
         "total_timesteps": 256,
-        "n_envs": 2,
+        "n_envs": 3,
         "vec_env": "dummy",
         "n_steps": 64,
         "batch_size": 64,

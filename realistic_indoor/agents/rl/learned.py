@@ -28,8 +28,9 @@ from __future__ import annotations
 import json
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, replace
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -46,6 +47,8 @@ __all__ = [
     "LEARNED_IDS",
     "LEARNED_PRESETS",
     "LearnedConfig",
+    "LearnedEnvFactory",
+    "learned_env_factories",
     "learned_preset",
     "make_learned_env",
     "train_learned",
@@ -61,15 +64,21 @@ class LearnedConfig:
     """A learned-explorer training run.
 
     Attributes:
-        env_ids: Registered ids trained on, in turn (their default buildings and step limits).
+        env_ids: Registered ids trained on (their default buildings and step limits). Each of
+            the ``n_envs`` environments runs every id, an episode each in turn, environment
+            ``i`` starting at id ``i % len(env_ids)``
+            (:class:`~realistic_indoor.agents.rl.turns.TakeTurns`): with two environments,
+            offices, schools and houses are all trained on.
         n_candidates: Candidate goals per decision (K).
         n_envs: Environments run in parallel (sub-processes when more than one).
         teacher: The rule cloned (a key of :data:`~realistic_indoor.agents.rl.teachers.TEACHERS`).
         bc_decisions: Decisions of the teacher's rule collected for behaviour cloning (0: none).
         bc_epochs: Passes of behaviour cloning over them.
         ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
-        seed: Seed of the policy and of the environments' episodes (``seed + i`` for the
-            ``i``-th environment; cloning and PPO take separate blocks of seeds from it).
+        seed: Seed of the policy and of the environments' episodes: the ``i``-th environment's
+            first episode of its ``p``-th id (in its turns) has the seed ``seed + i + p *
+            n_envs``, and later episodes continue each environment's random stream (cloning's
+            episodes, then PPO's).
         reward_scale: Weight of the ``coverage_auc`` reward (the return is this times the
             coverage AUC minus the coverage at reset).
         n_steps: Decisions per environment per PPO rollout.
@@ -176,22 +185,28 @@ class LearnedEnvFactory:
     """Builds one training environment (picklable, for sub-process vector environments).
 
     Args:
-        env_id: The registered id.
+        env_ids: The registered ids it runs, an episode each in turn (one id: that id's
+            environment itself).
         config: The training run.
+        seed_stride: Step between the seeds of its ids after a seeded reset (the number of
+            workers; :class:`~realistic_indoor.agents.rl.turns.TakeTurns`).
     """
 
-    def __init__(self, env_id: str, config: LearnedConfig) -> None:
-        self.env_id = env_id
+    def __init__(self, env_ids: Sequence[str], config: LearnedConfig, seed_stride: int = 1) -> None:
+        self.env_ids = tuple(env_ids)
         self.n_candidates = config.n_candidates
         self.reward_scale = config.reward_scale
+        self.seed_stride = seed_stride
 
     def __call__(self) -> Any:
-        """A new macro environment with the metric's reward, filtered keys, a Monitor."""
+        """A new macro environment (or ids in turn) with the metric's reward, filtered keys, a Monitor."""
         from stable_baselines3.common.monitor import Monitor
 
-        return Monitor(
-            make_learned_env(self.env_id, self.n_candidates, self.reward_scale), info_keywords=("coverage",)
-        )
+        from realistic_indoor.agents.rl.turns import TakeTurns
+
+        makers = [partial(make_learned_env, e, self.n_candidates, self.reward_scale) for e in self.env_ids]
+        env = makers[0]() if len(makers) == 1 else TakeTurns(makers, self.seed_stride)
+        return Monitor(env, info_keywords=("coverage",))
 
 
 def make_learned_env(env_id: str, n_candidates: int = 16, reward_scale: float = 1.0, **kwargs: Any) -> Any:
@@ -308,12 +323,23 @@ class _Meter:
         }
 
 
+def learned_env_factories(config: LearnedConfig) -> list[LearnedEnvFactory]:
+    """One factory per environment: environment ``i`` runs every id in turn, from id ``i % len(env_ids)``.
+
+    Every id is trained on however few environments there are (with two, offices, schools and
+    houses; before, each environment ran one id, and two of them never ran the third).
+    """
+    ids, n = config.env_ids, len(config.env_ids)
+    return [
+        LearnedEnvFactory(ids[i % n :] + ids[: i % n], config, seed_stride=config.n_envs)
+        for i in range(config.n_envs)
+    ]
+
+
 def _vec_env(config: LearnedConfig, seed: int) -> Any:
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
-    factories = [
-        LearnedEnvFactory(config.env_ids[i % len(config.env_ids)], config) for i in range(config.n_envs)
-    ]
+    factories = learned_env_factories(config)
     venv = SubprocVecEnv(factories, start_method="fork") if config.n_envs > 1 else DummyVecEnv(factories)
     venv.seed(seed)
     return venv

@@ -279,7 +279,8 @@ def test_training__the_same_seed_gives_the_same_model(tmp_path):
     from realistic_indoor.agents.rl.learned import learned_preset, train_learned
     from realistic_indoor.agents.rl.learned_agent import load_learned_model
 
-    config = learned_preset("learned-smoke", n_envs=2)  # two sub-processes, as the full recipe
+    # two sub-processes, as the full recipe, each taking two ids in turn
+    config = learned_preset("learned-smoke", n_envs=2, env_ids=("HouseExplore-v0", "HouseSearch-v0"))
     metas = [train_learned(config, tmp_path / f"m{i}.zip", log=lambda line: None) for i in range(2)]
     assert metas[0]["decisions"] == metas[1]["decisions"]
     assert metas[0]["primitive_steps"] == metas[1]["primitive_steps"]

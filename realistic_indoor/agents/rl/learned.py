@@ -76,9 +76,10 @@ class LearnedConfig:
         bc_epochs: Passes of behaviour cloning over them.
         ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
         seed: Seed of the policy and of the environments' episodes: the ``i``-th environment's
-            first episode of its ``p``-th id (in its turns) has the seed ``seed + i + p *
-            n_envs``, and later episodes continue each environment's random stream (cloning's
-            episodes, then PPO's).
+            first episode of its ``p``-th id (in its turns) has the seed ``seed * n_envs *
+            len(env_ids) + i + p * n_envs`` (no two runs, environments or ids share one), and
+            later episodes continue each environment's random stream (cloning's episodes, then
+            PPO's).
         reward_scale: Weight of the ``coverage_auc`` reward (the return is this times the
             coverage AUC minus the coverage at reset).
         n_steps: Decisions per environment per PPO rollout.
@@ -185,28 +186,30 @@ class LearnedEnvFactory:
     """Builds one training environment (picklable, for sub-process vector environments).
 
     Args:
-        env_ids: The registered ids it runs, an episode each in turn (one id: that id's
-            environment itself).
+        env_ids: The registered ids it runs, an episode each in turn.
         config: The training run.
-        seed_stride: Step between the seeds of its ids after a seeded reset (the number of
-            workers; :class:`~realistic_indoor.agents.rl.turns.TakeTurns`).
+        workers: Environments of the run (``config.n_envs``).
+        index: This environment's index among them (seeds:
+            :class:`~realistic_indoor.agents.rl.turns.TakeTurns`).
     """
 
-    def __init__(self, env_ids: Sequence[str], config: LearnedConfig, seed_stride: int = 1) -> None:
+    def __init__(
+        self, env_ids: Sequence[str], config: LearnedConfig, workers: int = 1, index: int = 0
+    ) -> None:
         self.env_ids = tuple(env_ids)
         self.n_candidates = config.n_candidates
         self.reward_scale = config.reward_scale
-        self.seed_stride = seed_stride
+        self.workers = workers
+        self.index = index
 
     def __call__(self) -> Any:
-        """A new macro environment (or ids in turn) with the metric's reward, filtered keys, a Monitor."""
+        """The ids' macro environments in turn, with the metric's reward, filtered keys, a Monitor."""
         from stable_baselines3.common.monitor import Monitor
 
         from realistic_indoor.agents.rl.turns import TakeTurns
 
         makers = [partial(make_learned_env, e, self.n_candidates, self.reward_scale) for e in self.env_ids]
-        env = makers[0]() if len(makers) == 1 else TakeTurns(makers, self.seed_stride)
-        return Monitor(env, info_keywords=("coverage",))
+        return Monitor(TakeTurns(makers, self.workers, self.index), info_keywords=("coverage",))
 
 
 def make_learned_env(env_id: str, n_candidates: int = 16, reward_scale: float = 1.0, **kwargs: Any) -> Any:
@@ -238,7 +241,8 @@ def train_learned(
     """Train the learned explorer (cloning, then MaskablePPO) and save it to ``out_path`` (``.zip``).
 
     The model and its ``.json`` (config, decisions, primitive steps, seconds, decisions/s,
-    primitive steps/s, the share of time collecting, the machine) are written whole or not at all.
+    primitive steps/s, the share of time collecting, the machine, and decisions, primitive steps
+    and finished episodes per id, ``by_id``) are written whole or not at all.
 
     Returns:
         The ``.json``'s content.
@@ -276,6 +280,12 @@ def train_learned(
     }
     write_text(out_path.with_suffix(".json"), json.dumps(meta, indent=1) + "\n")
     log(
+        "trained on: "
+        + "; ".join(
+            f"{k} {v['decisions']:,} decisions, {v['episodes']} episodes" for k, v in meta["by_id"].items()
+        )
+    )
+    log(
         f"saved {out_path} after {seconds:.0f} s: {meter.decisions:,} decisions, {meter.steps:,} primitive "
         f"steps ({meta['decisions_per_s']:.1f} decisions/s, {meta['steps_per_s']:.0f} primitive steps/s "
         f"collecting; collecting {meta['collect_share']:.0%} of the time)"
@@ -303,11 +313,19 @@ class _Meter:
         self.steps = 0
         self.collecting = 0.0
         self.coverages: list[float] = []
+        self.by_id: dict[str, dict[str, int]] = {}
 
     def add(self, infos: list[dict[str, Any]]) -> None:
         self.decisions += len(infos)
         self.steps += sum(int(i.get("primitive_steps", 0)) for i in infos)
         self.coverages.extend(float(i["coverage"]) for i in infos if "episode" in i)
+        for info in infos:
+            mix = self.by_id.setdefault(
+                str(info.get("env_id", "-")), {"decisions": 0, "primitive_steps": 0, "episodes": 0}
+            )
+            mix["decisions"] += 1
+            mix["primitive_steps"] += int(info.get("primitive_steps", 0))
+            mix["episodes"] += int("episode" in info)
 
     def summary(self, seconds: float) -> dict[str, Any]:
         recent = self.coverages[-50:]
@@ -320,18 +338,19 @@ class _Meter:
             "decisions_per_s": round(self.decisions / max(self.collecting, 1e-9), 2),
             "steps_per_s": round(self.steps / max(self.collecting, 1e-9), 1),
             "collect_share": round(self.collecting / max(seconds, 1e-9), 3),
+            "by_id": dict(sorted(self.by_id.items())),
         }
 
 
 def learned_env_factories(config: LearnedConfig) -> list[LearnedEnvFactory]:
     """One factory per environment: environment ``i`` runs every id in turn, from id ``i % len(env_ids)``.
 
-    Every id is trained on however few environments there are (with two, offices, schools and
-    houses; before, each environment ran one id, and two of them never ran the third).
+    Every id is trained on however few environments there are (with two: offices, schools and
+    houses).
     """
     ids, n = config.env_ids, len(config.env_ids)
     return [
-        LearnedEnvFactory(ids[i % n :] + ids[: i % n], config, seed_stride=config.n_envs)
+        LearnedEnvFactory(ids[i % n :] + ids[: i % n], config, workers=config.n_envs, index=i)
         for i in range(config.n_envs)
     ]
 

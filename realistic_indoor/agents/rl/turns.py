@@ -20,28 +20,36 @@ class TakeTurns(gym.Env):
     """Runs the environments of ``makers`` in turn: episode ``n`` in environment ``n % len(makers)``.
 
     Every environment is built at once and must have the first one's observation and action
-    spaces. A seeded ``reset(seed=s)`` starts the turns again from the first environment and
-    gives environment ``p`` the seed ``s + p * seed_stride`` for its next episode (so workers
-    seeded ``s, s + 1, ..., s + seed_stride - 1`` never share a seed); later episodes of each
-    environment continue its own random stream, as a single environment's do.
+    spaces. It is worker ``index`` of ``workers`` in a vector environment seeded ``s``, which
+    resets it with ``seed = s + index`` (stable-baselines3's numbering). A seeded reset starts
+    the turns again from the first environment and gives environment ``p`` the seed ``s *
+    workers * len(makers) + index + p * workers`` for its next episode: every run seed, worker
+    and environment has a seed of its own (with ``s + index``, runs seeded ``s`` and ``s + 1``
+    would share a worker's buildings). Later episodes of each environment continue its own
+    random stream, as a single environment's do.
 
-    Methods the environments have and this class does not (``action_masks``, ...) are the
-    current environment's, through ``get_wrapper_attr``.
+    Methods and attributes the environments have and this class does not (``action_masks``,
+    ...) are the current environment's, through ``get_wrapper_attr`` and ``has_wrapper_attr``;
+    ``unwrapped`` is this object.
 
     Args:
         makers: Callables that each build one environment.
-        seed_stride: Step between the seeds of the environments of one seeded reset (the
-            number of workers).
+        workers: Workers of the vector environment (1: used alone).
+        index: This worker's index, below ``workers``.
 
     Raises:
-        ConfigError: If ``makers`` is empty, ``seed_stride`` is below 1, or the spaces differ.
+        ConfigError: If ``makers`` is empty, ``workers`` or ``index`` are out of range, or the
+            spaces differ.
     """
 
-    def __init__(self, makers: Sequence[Callable[[], gym.Env]], seed_stride: int = 1) -> None:
+    def __init__(self, makers: Sequence[Callable[[], gym.Env]], workers: int = 1, index: int = 0) -> None:
         if not makers:
             raise ConfigError("TakeTurns needs at least one environment to run")
-        if isinstance(seed_stride, bool) or not isinstance(seed_stride, int) or seed_stride < 1:
-            raise ConfigError(f"TakeTurns: seed_stride must be an int >= 1, got {seed_stride!r}")
+        for name, value, low in (("workers", workers, 1), ("index", index, 0)):
+            if isinstance(value, bool) or not isinstance(value, int) or value < low:
+                raise ConfigError(f"TakeTurns: {name} must be an int >= {low}, got {value!r}")
+        if index >= workers:
+            raise ConfigError(f"TakeTurns: index ({index}) must be below workers ({workers})")
         self.envs = [make() for make in makers]
         first = self.envs[0]
         for i, env in enumerate(self.envs[1:], 1):
@@ -54,7 +62,8 @@ class TakeTurns(gym.Env):
         self.action_space = first.action_space
         self.metadata = first.metadata
         self.render_mode = first.render_mode
-        self.seed_stride = seed_stride
+        self.workers = workers
+        self.index = index
         self.turn = -1
         self._seeds: list[int | None] = [None] * len(self.envs)
 
@@ -63,18 +72,36 @@ class TakeTurns(gym.Env):
         """The environment of the episode under way (the first before any reset)."""
         return self.envs[max(self.turn, 0)]
 
+    def seeds_for(self, seed: int) -> list[int]:
+        """The seeds a reset with ``seed`` gives the environments, in turn order.
+
+        Raises:
+            ConfigError: If ``seed`` is below ``index`` (it is not ``s + index``).
+        """
+        run = seed - self.index
+        if run < 0:
+            raise ConfigError(
+                f"TakeTurns: worker {self.index} is reset with its vector environment's seed plus {self.index}, "
+                f"got seed {seed}; seed the vector environment with a seed >= 0"
+            )
+        n = len(self.envs)
+        return [run * self.workers * n + self.index + p * self.workers for p in range(n)]
+
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[Any, dict]:
         """The next environment's first observation (the first environment's after a seeded reset)."""
+        super().reset(seed=seed)
         if seed is not None:
-            self._seeds = [seed + p * self.seed_stride for p in range(len(self.envs))]
+            self._seeds = list(self.seeds_for(seed))
             self.turn = -1
         self.turn = (self.turn + 1) % len(self.envs)
         own, self._seeds[self.turn] = self._seeds[self.turn], None
-        return self.current.reset(seed=own, options=options)
+        obs, info = self.current.reset(seed=own, options=options)
+        return obs, {**info, "env_id": self._id()}
 
     def step(self, action: Any) -> tuple[Any, float, bool, bool, dict]:
-        """A step of the current environment."""
-        return self.current.step(action)
+        """A step of the current environment; its ``info`` gains ``env_id`` (the id, or the turn's index)."""
+        obs, reward, terminated, truncated, info = self.current.step(action)
+        return obs, reward, terminated, truncated, {**info, "env_id": self._id()}
 
     def render(self) -> Any:
         """The current environment's frame."""
@@ -90,6 +117,14 @@ class TakeTurns(gym.Env):
         if hasattr(self, name):
             return getattr(self, name)
         return self.current.get_wrapper_attr(name)
+
+    def has_wrapper_attr(self, name: str) -> bool:
+        """Whether this object or the current environment has ``name``."""
+        return hasattr(self, name) or self.current.has_wrapper_attr(name)
+
+    def _id(self) -> str:
+        spec = getattr(self.current, "spec", None)
+        return spec.id if spec is not None else str(self.turn)
 
 
 def _name(env: gym.Env) -> str:

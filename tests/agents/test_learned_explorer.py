@@ -267,6 +267,10 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
     assert meta["config"]["teacher"] == "utility"
     for key in ("decisions_per_s", "steps_per_s", "collect_share", "machine", "seconds"):
         assert key in meta
+    # the preset trains on houses alone: every decision and primitive step is theirs
+    assert list(meta["by_id"]) == ["HouseExplore-v0"]
+    assert meta["by_id"]["HouseExplore-v0"]["decisions"] == meta["decisions"]
+    assert meta["by_id"]["HouseExplore-v0"]["primitive_steps"] == meta["primitive_steps"]
     agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))
     assert agent.model.action_space.n == 16
 
@@ -284,6 +288,7 @@ def test_training__the_same_seed_gives_the_same_model(tmp_path):
     metas = [train_learned(config, tmp_path / f"m{i}.zip", log=lambda line: None) for i in range(2)]
     assert metas[0]["decisions"] == metas[1]["decisions"]
     assert metas[0]["primitive_steps"] == metas[1]["primitive_steps"]
+    assert metas[0]["by_id"] == metas[1]["by_id"] and set(metas[0]["by_id"]) == set(config.env_ids)
     a, b = (load_learned_model(tmp_path / f"m{i}.zip").policy.state_dict() for i in range(2))
     assert a.keys() == b.keys()
     assert all(torch.equal(a[k], b[k]) for k in a)

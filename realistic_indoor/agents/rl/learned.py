@@ -309,15 +309,19 @@ class _Meter:
     """Decisions, primitive steps, episodes and time spent collecting."""
 
     def __init__(self) -> None:
-        self.decisions = 0
-        self.steps = 0
         self.collecting = 0.0
         self.coverages: list[float] = []
         self.by_id: dict[str, dict[str, int]] = {}
 
+    @property
+    def decisions(self) -> int:
+        return sum(mix["decisions"] for mix in self.by_id.values())
+
+    @property
+    def steps(self) -> int:
+        return sum(mix["primitive_steps"] for mix in self.by_id.values())
+
     def add(self, infos: list[dict[str, Any]]) -> None:
-        self.decisions += len(infos)
-        self.steps += sum(int(i.get("primitive_steps", 0)) for i in infos)
         self.coverages.extend(float(i["coverage"]) for i in infos if "episode" in i)
         for info in infos:
             mix = self.by_id.setdefault(

@@ -123,10 +123,10 @@ class TakeTurns(gym.Env):
         return hasattr(self, name) or self.current.has_wrapper_attr(name)
 
     def _id(self) -> str:
-        spec = getattr(self.current, "spec", None)
-        return spec.id if spec is not None else str(self.turn)
+        return _name(self.current, str(self.turn))
 
 
-def _name(env: gym.Env) -> str:
+def _name(env: gym.Env, default: str | None = None) -> str:
+    """The environment's registered id, else ``default``, else its class name."""
     spec = getattr(env, "spec", None)
-    return spec.id if spec is not None else type(env).__name__
+    return spec.id if spec is not None else default or type(env).__name__

@@ -31,9 +31,12 @@ rule (``realistic-indoor train --preset learned --teacher structure-utility``): 
 ``learned_su_seeds.md``; ``--track learned-structure-utility-area``, of the one cloned from the
 ``structure-utility-area`` rule: models ``learned_sua_<kind>_seed<N>`` in
 ``experiments/results/learned_sua_models/``, reported in ``learned_sua_seeds.md``; ``--track
-learned-structure-utility-area-short``, of the recipe's rule (``structure-utility-area-short``),
-whose realistic seed-0 model is the package's: models ``learned_suas_<kind>_seed<N>`` in
-``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``.
+learned-structure-utility-area-short``, of the recipe's rule (``structure-utility-area-short``)
+cloned in every id (``--preset learned-one-rule``): models ``learned_suas_<kind>_seed<N>`` in
+``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``; ``--track
+learned-house-rule``, of the recipe as it is now, whose realistic seed-0 model is the package's (that rule, the ``gain`` rule in houses, a
+scorer that sees the decision's context): models ``learned_hr_<kind>_seed<N>`` in
+``experiments/results/learned_hr_models/``, reported in ``learned_hr_seeds.md``.
 """
 
 from __future__ import annotations
@@ -135,15 +138,26 @@ TRACKS = {
         "learned_suas_seeds",
         "The learned explorer cloned from the structure-utility-area-short rule: realistic-trained and random-trained",
         "learned (structure-utility-area-short)",
+        "learned-one-rule --teacher structure-utility-area-short",
+        teacher="structure-utility-area-short",
+    ),
+    "learned-house-rule": Track(
+        "learned_hr",
         "learned",
-        # the realistic seed-0 model is the package's own (the recipe's rule)
-        {"learned_suas_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+        ROOT / "experiments" / "results" / "learned_hr_models",
+        "learned_hr_seeds",
+        "The learned explorer cloned from the structure-utility-area-short rule, the gain rule in houses",
+        "learned (house rule)",
+        "learned",
+        # the realistic seed-0 model is the package's own (the recipe)
+        {"learned_hr_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
         "structure-utility-area-short",
     ),
 }
-"""The study's tracks: the learned explorer, primitive-action PPO given the global map, and the
+"""The study's tracks: the learned explorer, primitive-action PPO given the global map, the
 learned explorer cloned from the ``structure-utility``, ``structure-utility-area`` and
-``structure-utility-area-short`` rules (``--teacher``) instead of ``structure``."""
+``structure-utility-area-short`` rules (``--teacher``) instead of ``structure``, and the recipe
+that clones the ``gain`` rule in houses with a scorer that sees the decision's context."""
 NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (

@@ -34,8 +34,10 @@ presets (measured on 2 CPU cores):
            limit left (time_left) in the policy's view; its environments run in sub-processes
   learned  the learned explorer on offices, schools and houses at their default sizes and
            step limits: 20,000 decisions cloning the structure-utility-area-short rule
-           (--teacher), then 40,000 of MaskablePPO (--timesteps sets these; 24 to 39 minutes), then 2
-           episodes per agent and id
+           (the gain rule in houses; --teacher names one rule for every id), then 40,000 of
+           MaskablePPO (--timesteps sets these; 24 to 39 minutes), then 2 episodes per agent and id
+  learned-one-rule  the learned recipe before houses had their own rule: one rule in every
+           id, a policy that scores each candidate alone
   learned-smoke  seconds, on houses: checks the learned explorer's set-up
 
 output:
@@ -103,8 +105,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--teacher",
         choices=TEACHERS,
-        help="the learned presets only: the classical rule cloned before MaskablePPO (default: the preset's, "
-        f"{DEFAULT_TEACHER})",
+        help="the learned presets only: the classical rule cloned before MaskablePPO, in every id (default: "
+        f"the preset's, {DEFAULT_TEACHER}, with the gain rule in houses)",
     )
     p.add_argument(
         "--out",
@@ -179,6 +181,7 @@ def _learned_config(args: argparse.Namespace, env_ids: tuple[str, ...]):
                 "--teacher chooses the rule a training clones; with --no-train nothing is trained, leave it out"
             )
         changes["teacher"] = args.teacher
+        changes["teacher_by_id"] = ()  # the rule asked for, in every id
     return learned_preset(args.preset, **changes)
 
 
@@ -310,13 +313,21 @@ def _train(args: argparse.Namespace, config, model_path: Path) -> None:
     )
 
 
+def _rules(config) -> str:
+    """The cloned rules in words: ``the structure rule (the gain rule in HouseExplore-v0)``."""
+    other = [
+        f"the {rule} rule in {env_id}" for env_id, rule in config.teacher_by_id if env_id in config.env_ids
+    ]
+    return f"{config.teacher} rule" + (f" ({'; '.join(other)})" if other else "")
+
+
 def _train_learned(args: argparse.Namespace, config, model_path: Path) -> None:
     from realistic_indoor.agents.rl.learned import require_learned, train_learned
 
     require_learned()
     print(
         f"training the learned explorer ({args.preset} preset, seed {config.seed}) on {', '.join(config.env_ids)}: "
-        f"{config.bc_decisions:,} decisions of cloning the {config.teacher} rule, then {config.ppo_decisions:,} of "
+        f"{config.bc_decisions:,} decisions of cloning the {_rules(config)}, then {config.ppo_decisions:,} of "
         "MaskablePPO; "
         f"model to {model_path}",
         flush=True,

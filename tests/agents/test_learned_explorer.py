@@ -220,19 +220,23 @@ def test_committed_model__explores_a_house():
 
 
 def test_committed_model__came_from_the_recipe_and_its_record_is_beside_it():
-    """The package's model is the study's realistic seed-0 model of the recipe's own rule."""
+    """The package's model is the realistic seed-0 model of the recipe as it is."""
     from pathlib import Path
 
     from realistic_indoor.agents.rl.learned import learned_preset
+    from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL, load_learned_model
 
-    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_suas_models"
-    record = json.loads((folder / "learned_suas_realistic_seed0.json").read_text())
+    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_hr_models"
+    record = json.loads((folder / "learned_hr_realistic_seed0.json").read_text())
     assert record["config"] == learned_preset("learned").to_dict()  # the default recipe, seed 0
     assert record["config"]["teacher"] == "structure-utility-area-short"
-    log = (folder / "learned_suas_realistic_seed0.log").read_text()
-    assert f"saved runs/learned_suas_realistic_seed0.zip after {record['seconds']:.0f} s" in log
-    # the study's models keep no copy: the package's file is the one
-    assert not (folder / "learned_suas_realistic_seed0.zip").exists()
+    assert record["config"]["teacher_by_id"] == [["HouseExplore-v0", "gain"]]
+    log = (folder / "learned_hr_realistic_seed0.log").read_text()
+    assert f"saved runs/ctx/learned_ctx_realistic_seed0.zip after {record['seconds']:.0f} s" in log
+    # the study's models keep no copy: the package's file is the one, its scorer reads the context
+    assert not (folder / "learned_hr_realistic_seed0.zip").exists()
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    assert load_learned_model(DEFAULT_MODEL).policy.context is True
 
 
 @pytest.mark.slow
@@ -265,6 +269,7 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
     assert meta["decisions"] >= 128 and meta["primitive_steps"] > meta["decisions"]
     assert meta["behaviour_cloning"]["decisions"] >= 64
     assert meta["config"]["teacher"] == "utility"
+    assert meta["config"]["teacher_by_id"] == []  # --teacher names the one rule of every id
     for key in ("decisions_per_s", "steps_per_s", "collect_share", "machine", "seconds"):
         assert key in meta
     # the preset trains on houses alone: every decision and primitive step is theirs
@@ -273,6 +278,7 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
     assert meta["by_id"]["HouseExplore-v0"]["primitive_steps"] == meta["primitive_steps"]
     agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))
     assert agent.model.action_space.n == 16
+    assert agent.model.policy.context is True  # the recipe's scorer, saved and loaded with it
 
 
 @pytest.mark.slow
@@ -292,3 +298,91 @@ def test_training__the_same_seed_gives_the_same_model(tmp_path):
     a, b = (load_learned_model(tmp_path / f"m{i}.zip").policy.state_dict() for i in range(2))
     assert a.keys() == b.keys()
     assert all(torch.equal(a[k], b[k]) for k in a)
+
+
+def test_decision_context__the_offered_candidates_share_in_rooms_number_and_mean_path_cost():
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    import torch
+
+    from realistic_indoor.agents.rl.scorer import decision_context
+
+    flat, _ = _rows(
+        {"in_room": 1.0, "path_cost": 0.2},
+        {"in_room": 1.0, "path_cost": 0.4},
+        {"in_room": 0.0, "path_cost": 0.6},
+    )
+    rows = flat.reshape(4, F).copy()
+    rows[3, CANDIDATE_FEATURES.index("in_room")] = 1.0  # a row not offered (valid 0) counts for nothing
+    rows[3, CANDIDATE_FEATURES.index("path_cost")] = 5.0
+    got = decision_context(torch.as_tensor(rows)[None])[0].tolist()
+    assert got == pytest.approx([2 / 3, 3 / 4, 0.4])  # 2 of 3 in rooms, 3 of K = 4, (0.2 + 0.4 + 0.6) / 3
+
+
+def test_candidate_scorer__with_context_a_score_depends_on_the_other_candidates():
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    import torch
+
+    from realistic_indoor.agents.rl.scorer import CandidateScorer
+
+    flat, _ = _rows({"path_cost": 0.2, "size": 0.3}, {"path_cost": 0.5, "in_room": 0.0})
+    moved = flat.reshape(4, F).copy()
+    moved[1, CANDIDATE_FEATURES.index("in_room")] = 1.0  # only the second candidate changes
+    batch = torch.as_tensor(
+        np.stack([np.append(flat, 0.5), np.append(moved.ravel(), 0.5)]), dtype=torch.float32
+    )
+    for context in (False, True):
+        torch.manual_seed(0)
+        scorer = CandidateScorer(4, context=context)
+        torch.nn.init.normal_(scorer.head.weight)  # the head starts near 0; make differences visible
+        with torch.no_grad():
+            first = scorer(batch)[:, 0]
+        # alone, a row's score is its own; with the context, the first candidate's score sees the second's room
+        assert (float(first[0]) != float(first[1])) is context
+
+
+def test_learned_config__a_rule_per_id_and_one_line_errors_for_bad_pairs():
+    from realistic_indoor.agents.rl.learned import LearnedConfig, learned_preset
+    from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER
+
+    recipe = learned_preset("learned")
+    assert recipe.rule_for("HouseExplore-v0") == "gain"
+    assert recipe.rule_for("OfficeExplore-v0") == recipe.rule_for("SchoolExplore-v0") == DEFAULT_TEACHER
+    assert learned_preset("learned-one-rule").rule_for("HouseExplore-v0") == DEFAULT_TEACHER
+    for pairs in ((("HouseExplore-v0", "no-such-rule"),), (("NoSuch-v0", "gain"),), (("HouseExplore-v0",),)):
+        with pytest.raises(ConfigError) as err:
+            LearnedConfig(teacher_by_id=pairs)
+        assert "\n" not in str(err.value) and "teacher" in str(err.value)
+
+
+@pytest.mark.slow
+def test_cloning__each_id_episodes_are_chosen_by_its_own_rule(monkeypatch, tmp_path):
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    from realistic_indoor.agents.rl.learned import learned_preset, train_learned
+
+    class Counting:
+        """A rule that takes the nearest candidate and counts its decisions."""
+
+        def __init__(self) -> None:
+            self.calls = 0
+
+        def choose(self, candidates: np.ndarray, mask: np.ndarray) -> int:
+            self.calls += 1
+            return 0
+
+    houses, others = Counting(), Counting()
+    monkeypatch.setitem(TEACHERS, "gain", houses)
+    monkeypatch.setitem(TEACHERS, "utility", others)
+    config = learned_preset(
+        "learned-smoke",
+        env_ids=("HouseExplore-v0", "OfficeExplore-v0"),
+        teacher="utility",
+        teacher_by_id=(("HouseExplore-v0", "gain"),),
+        bc_decisions=150,
+        ppo_decisions=0,
+    )
+    meta = train_learned(config, tmp_path / "m.zip", log=lambda line: None)
+    # one environment takes houses, then offices: every cloned decision was its id's rule's
+    assert houses.calls == meta["by_id"]["HouseExplore-v0"]["decisions"] > 0
+    assert others.calls == meta["by_id"]["OfficeExplore-v0"]["decisions"] > 0
+    assert houses.calls + others.calls == meta["behaviour_cloning"]["decisions"] == 150
+    assert set(meta["behaviour_cloning"]["agreement_by_id"]) == set(config.env_ids)

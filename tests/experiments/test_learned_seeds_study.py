@@ -130,21 +130,19 @@ def test_recipe_track__its_seed_0_model_is_the_package_one(tmp_path):
     from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER
 
     module = _load()
-    track = module.TRACKS["learned-structure-utility-area-short"]
-    assert track.teacher == DEFAULT_TEACHER  # the recipe's rule
-    (tmp_path / "learned_suas_realistic_seed0.json").write_text(
+    track = module.TRACKS["learned-house-rule"]
+    assert track.teacher == DEFAULT_TEACHER  # the recipe's rule (and gain in houses)
+    (tmp_path / "learned_hr_realistic_seed0.json").write_text(
         json.dumps({"config": {"teacher": "structure-utility-area-short"}})
     )
-    (tmp_path / "learned_suas_random_seed0.zip").write_bytes(b"")
+    (tmp_path / "learned_hr_random_seed0.zip").write_bytes(b"")
     found = module.find_models(tmp_path, track)
-    assert list(found) == ["learned_suas_realistic_seed0", "learned_suas_random_seed0"]
-    assert found["learned_suas_realistic_seed0"] == DEFAULT_MODEL
-    # the earlier rules' tracks have no committed model any more: their seed-0 models lie in
+    assert list(found) == ["learned_hr_realistic_seed0", "learned_hr_random_seed0"]
+    assert found["learned_hr_realistic_seed0"] == DEFAULT_MODEL
+    # the earlier recipes' tracks have no committed model any more: their seed-0 models lie in
     # their folders
-    assert module.TRACKS["learned"].committed == {}
-    assert module.TRACKS["learned-structure-utility-area"].committed == {}
-    sua = module.find_models(
-        module.TRACKS["learned-structure-utility-area"].models,
-        module.TRACKS["learned-structure-utility-area"],
-    )
-    assert sua["learned_sua_realistic_seed0"].parent.name == "learned_sua_models"
+    for name in ("learned", "learned-structure-utility-area", "learned-structure-utility-area-short"):
+        assert module.TRACKS[name].committed == {}
+        found = module.find_models(module.TRACKS[name].models, module.TRACKS[name])
+        seed0 = next(path for model, path in found.items() if model.endswith("_realistic_seed0"))
+        assert seed0.parent == module.TRACKS[name].models

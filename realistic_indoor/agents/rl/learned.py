@@ -13,9 +13,14 @@ The recipe, :func:`train_learned`:
    three times the path cost, doubled for a frontier in a room and doubled for one shorter than
    1 m, less the frontier's length and twice the unobserved area near it; a detected victim
    first; :mod:`~realistic_indoor.agents.rl.teachers`,
-   where the rules were compared on tuning seeds): decisions are collected with that rule
-   choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to its choices
-   (cross-entropy) and the critic to the discounted returns that followed.
+   where the rules were compared on tuning seeds), and in houses the ``gain`` rule (the path
+   cost less twice the unobserved area near the frontier, :attr:`LearnedConfig.teacher_by_id`),
+   which leads the nearest frontier there where the other does not: decisions are collected
+   with the rules choosing (seeds from :attr:`LearnedConfig.seed`), and the policy is fitted to
+   their choices (cross-entropy) and the critic to the discounted returns that followed. The
+   policy is not told the building type; its scorer sees, beside each candidate, what the
+   decision offers as a whole (:attr:`LearnedConfig.scorer_context`), which tells most of a
+   house's decisions from an office's.
 2. **MaskablePPO** from there, for the rest of the budget.
 
 The log reports decisions/s, primitive steps/s and the share of time collecting against
@@ -72,6 +77,12 @@ class LearnedConfig:
         n_candidates: Candidate goals per decision (K).
         n_envs: Environments run in parallel (sub-processes when more than one).
         teacher: The rule cloned (a key of :data:`~realistic_indoor.agents.rl.teachers.TEACHERS`).
+        teacher_by_id: Pairs ``(env id, rule)``: the rule cloned in that id's episodes instead
+            of ``teacher`` (by default ``gain`` in houses, where it leads the nearest frontier
+            on the tuning seeds and ``teacher`` does not). The policy is not told the id: with
+            ``scorer_context`` it can tell a house's decisions by what they offer.
+        scorer_context: Give the policy's scorer the decision's figures
+            (:data:`~realistic_indoor.agents.rl.scorer.CONTEXT_FEATURES`) beside each candidate.
         bc_decisions: Decisions of the teacher's rule collected for behaviour cloning (0: none).
         bc_epochs: Passes of behaviour cloning over them.
         ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
@@ -98,6 +109,8 @@ class LearnedConfig:
     n_candidates: int = 16
     n_envs: int = 2
     teacher: str = DEFAULT_TEACHER
+    teacher_by_id: tuple[tuple[str, str], ...] = (("HouseExplore-v0", "gain"),)
+    scorer_context: bool = True
     bc_decisions: int = 20_000
     bc_epochs: int = 30
     ppo_decisions: int = 40_000
@@ -136,6 +149,13 @@ class LearnedConfig:
             raise ConfigError(
                 f"LearnedConfig.teacher must be one of {', '.join(TEACHERS)}, got {self.teacher!r}"
             )
+        by_id = tuple(tuple(pair) for pair in self.teacher_by_id)
+        if any(len(pair) != 2 or pair[0] not in PRESETS or pair[1] not in TEACHERS for pair in by_id):
+            raise ConfigError(
+                f"LearnedConfig.teacher_by_id must be (registered env id, rule) pairs, rules of "
+                f"{', '.join(TEACHERS)}; got {self.teacher_by_id!r}"
+            )
+        object.__setattr__(self, "teacher_by_id", by_id)
         for name in ("bc_decisions", "ppo_decisions", "seed"):
             require_int("LearnedConfig", name, getattr(self, name), 0)
         for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):
@@ -151,11 +171,20 @@ class LearnedConfig:
 
     def to_dict(self) -> dict[str, Any]:
         """Plain values (for the JSON saved next to a model)."""
-        return {**asdict(self), "env_ids": list(self.env_ids)}
+        return {
+            **asdict(self),
+            "env_ids": list(self.env_ids),
+            "teacher_by_id": [list(pair) for pair in self.teacher_by_id],
+        }
+
+    def rule_for(self, env_id: str) -> str:
+        """The rule cloned in ``env_id``'s episodes."""
+        return dict(self.teacher_by_id).get(env_id, self.teacher)
 
 
 LEARNED_PRESETS: dict[str, dict[str, Any]] = {
     "learned": {},
+    "learned-one-rule": {"teacher_by_id": (), "scorer_context": False},
     "learned-smoke": {
         "bc_decisions": 64,
         "bc_epochs": 1,
@@ -168,7 +197,9 @@ LEARNED_PRESETS: dict[str, dict[str, Any]] = {
     },
 }
 """Named overrides of :class:`LearnedConfig`: ``learned`` (the recipe: 20,000 cloned decisions,
-then 40,000 of MaskablePPO), ``learned-smoke`` (seconds, on houses: checks the set-up)."""
+then 40,000 of MaskablePPO), ``learned-one-rule`` (the recipe before houses had a rule of their
+own: one rule cloned in every id, a scorer without the decision's context; the study's
+``learned_suas`` models), ``learned-smoke`` (seconds, on houses: checks the set-up)."""
 
 
 def learned_preset(name: str, **changes: Any) -> LearnedConfig:
@@ -261,7 +292,9 @@ def train_learned(
     venv = _vec_env(config, config.seed)
     meter = _Meter()
     try:
-        model = sb3_contrib.MaskablePPO(CandidatePolicy, venv, **ppo_arguments(config))
+        model = sb3_contrib.MaskablePPO(
+            CandidatePolicy, venv, policy_kwargs={"context": config.scorer_context}, **ppo_arguments(config)
+        )
         bc = _clone(model, venv, config, meter, log) if config.bc_decisions else {}
         if config.ppo_decisions:
             callback = _ppo_callback(meter, log, start)
@@ -373,15 +406,17 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
     import torch
     from sb3_contrib.common.maskable.utils import get_action_masks
 
-    rule = TEACHERS[config.teacher]
     obs = venv.reset()
     n_env = venv.num_envs
     store: dict[str, list[np.ndarray]] = {k: [] for k in obs}
-    actions, masks, rewards, dones = [], [], [], []
+    actions, masks, rewards, dones, ids = [], [], [], [], []
     t0 = time.perf_counter()
     while len(actions) * n_env < config.bc_decisions:
         mask = get_action_masks(venv)
-        act = np.array([rule.choose(obs["candidates"][i], mask[i]) for i in range(n_env)])
+        now = venv.get_attr("env_id")
+        rules = [TEACHERS[config.rule_for(env_id)] for env_id in now]
+        act = np.array([rules[i].choose(obs["candidates"][i], mask[i]) for i in range(n_env)])
+        ids.append(now)
         for k in obs:
             store[k].append(obs[k].copy())
         actions.append(act)
@@ -418,7 +453,16 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
         log(
             f"cloning epoch {epoch + 1}/{config.bc_epochs}: loss {total / n:.4f}, agrees with the rule on {agree:.1%}"
         )
-    return {"decisions": int(n), "seconds": round(time.perf_counter() - t0, 1), "agreement": round(agree, 4)}
+    same = (chosen == act_t).numpy()
+    flat_ids = np.asarray(ids).reshape(-1)
+    by_id = {str(e): round(float(same[flat_ids == e].mean()), 4) for e in sorted(set(flat_ids.tolist()))}
+    log("agreement by id: " + ", ".join(f"{e} {a:.1%}" for e, a in by_id.items()))
+    return {
+        "decisions": int(n),
+        "seconds": round(time.perf_counter() - t0, 1),
+        "agreement": round(agree, 4),
+        "agreement_by_id": by_id,
+    }
 
 
 def _discounted(rewards: np.ndarray, dones: np.ndarray, gamma: float) -> np.ndarray:

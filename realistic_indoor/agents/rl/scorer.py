@@ -6,6 +6,12 @@ The macro environments' ``candidates`` observation is K rows of the same feature
 candidate goal. A plain MLP over the flattened rows would have to learn the same rule K times,
 once per slot; here one MLP maps each row (with the share of the step limit left) to a score,
 and the action's logits are the K scores. The critic reads the flattened observation.
+
+With ``context`` each row also gets three figures of the whole decision, the same for every
+candidate: the share of the candidates on offer that lie in rooms, their number (a share of K)
+and their mean path cost. A score can then depend on the kind of place the robot is in (a
+house's decisions mostly offer room frontiers only, a few metres away; an office's and a
+school's offer corridor frontiers too, farther apart), which a row alone does not say.
 """
 
 from __future__ import annotations
@@ -18,11 +24,16 @@ from torch import nn
 
 from realistic_indoor.envs.macro import CANDIDATE_FEATURES
 
-__all__ = ["OBS_KEYS", "CandidatePolicy", "CandidateScorer"]
+__all__ = ["CONTEXT_FEATURES", "OBS_KEYS", "CandidatePolicy", "CandidateScorer"]
 
 OBS_KEYS = ("candidates", "time_left")
 """The observation keys the policy reads (in this order: stable-baselines3 concatenates the keys
 of a ``Dict`` observation in its sorted order, which is this one)."""
+
+CONTEXT_FEATURES = ("room_share", "offered_share", "mean_path_cost")
+"""The decision's figures a scorer with ``context`` adds to every row: the share of the offered
+candidates in rooms, the offered candidates as a share of K, and their mean path cost (the
+``path_cost`` feature's unit, 10 m)."""
 
 
 class CandidateScorer(nn.Module):
@@ -31,14 +42,16 @@ class CandidateScorer(nn.Module):
     Args:
         n_candidates: K.
         hidden: Widths of the hidden layers.
+        context: Give every row the decision's :data:`CONTEXT_FEATURES` too.
     """
 
-    def __init__(self, n_candidates: int, hidden: tuple[int, ...] = (64, 64)) -> None:
+    def __init__(self, n_candidates: int, hidden: tuple[int, ...] = (64, 64), context: bool = False) -> None:
         super().__init__()
         self.k = n_candidates
         self.f = len(CANDIDATE_FEATURES)
+        self.context = context
         layers: list[nn.Module] = []
-        width = self.f + 1
+        width = self.f + 1 + (len(CONTEXT_FEATURES) if context else 0)
         for h in hidden:
             layers += [nn.Linear(width, h), nn.Tanh()]
             width = h
@@ -51,17 +64,42 @@ class CandidateScorer(nn.Module):
         """The K logits of each row of ``latent`` (flat candidates, then time left)."""
         rows = latent[:, : self.k * self.f].reshape(-1, self.k, self.f)
         left = latent[:, self.k * self.f : self.k * self.f + 1].unsqueeze(1).expand(-1, self.k, 1)
-        return self.head(self.body(torch.cat([rows, left], dim=-1))).squeeze(-1)
+        parts = [rows, left]
+        if self.context:
+            parts.append(decision_context(rows).unsqueeze(1).expand(-1, self.k, len(CONTEXT_FEATURES)))
+        return self.head(self.body(torch.cat(parts, dim=-1))).squeeze(-1)
+
+
+def decision_context(rows: torch.Tensor) -> torch.Tensor:
+    """The :data:`CONTEXT_FEATURES` of each decision: ``(B, K, F) -> (B, 3)``."""
+    valid = (rows[..., CANDIDATE_FEATURES.index("valid")] > 0.5).float()
+    offered = valid.sum(-1)
+    per = offered.clamp(min=1.0)
+    in_room = (rows[..., CANDIDATE_FEATURES.index("in_room")] > 0.5).float()
+    cost = rows[..., CANDIDATE_FEATURES.index("path_cost")]
+    return torch.stack(
+        [(in_room * valid).sum(-1) / per, offered / rows.shape[1], (cost * valid).sum(-1) / per], dim=-1
+    )
 
 
 class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
     """``MaskablePPO``'s ``MultiInputPolicy`` with :class:`CandidateScorer` as its action head.
 
     The observation must hold exactly :data:`OBS_KEYS`. The actor's MLP is empty (the scorer reads
-    the observation itself); the critic's is ``net_arch["vf"]`` (64, 64 by default).
+    the observation itself); the critic's is ``net_arch["vf"]`` (64, 64 by default). ``context``
+    (a ``policy_kwargs`` entry, saved with the model) gives the scorer the decision's
+    :data:`CONTEXT_FEATURES`.
     """
 
-    def __init__(self, observation_space: Any, action_space: Any, lr_schedule: Any, **kwargs: Any) -> None:
+    def __init__(
+        self,
+        observation_space: Any,
+        action_space: Any,
+        lr_schedule: Any,
+        context: bool = False,
+        **kwargs: Any,
+    ) -> None:
+        self.context = context
         keys = tuple(observation_space.spaces)
         if keys != OBS_KEYS:
             raise ValueError(f"CandidatePolicy reads the observation keys {OBS_KEYS}, got {keys}")
@@ -70,5 +108,8 @@ class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
 
     def _build(self, lr_schedule: Any) -> None:
         super()._build(lr_schedule)
-        self.action_net = CandidateScorer(int(self.action_space.n))
+        self.action_net = CandidateScorer(int(self.action_space.n), context=self.context)
         self.optimizer = self.optimizer_class(self.parameters(), lr=lr_schedule(1), **self.optimizer_kwargs)
+
+    def _get_constructor_parameters(self) -> dict[str, Any]:
+        return {**super()._get_constructor_parameters(), "context": self.context}

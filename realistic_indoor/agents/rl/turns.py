@@ -72,6 +72,11 @@ class TakeTurns(gym.Env):
         """The environment of the episode under way (the first before any reset)."""
         return self.envs[max(self.turn, 0)]
 
+    @property
+    def env_id(self) -> str:
+        """The registered id of the episode under way (the turn's index for an env without one)."""
+        return self._id()
+
     def seeds_for(self, seed: int) -> list[int]:
         """The seeds a reset with ``seed`` gives the environments, in turn order.
 

@@ -26,7 +26,7 @@ robot's whole map (``realistic-indoor train --preset global-map``): models
 ``ppo_global_<kind>_seed<N>`` in ``experiments/results/ppo_global_models/``, run as ``ppo:MODEL``,
 reported in ``ppo_global_seeds.md`` and ``ppo_global_seeds/<model>/``. ``--track
 learned-structure-utility`` asks it of the learned explorer cloned from the ``structure-utility``
-rule (``realistic-indoor train --preset learned --teacher structure-utility``): models
+rule (``realistic-indoor train --preset learned-one-rule --teacher structure-utility``): models
 ``learned_su_<kind>_seed<N>`` in ``experiments/results/learned_su_models/``, reported in
 ``learned_su_seeds.md``; ``--track learned-structure-utility-area``, of the one cloned from the
 ``structure-utility-area`` rule: models ``learned_sua_<kind>_seed<N>`` in
@@ -34,8 +34,8 @@ rule (``realistic-indoor train --preset learned --teacher structure-utility``): 
 learned-structure-utility-area-short``, of the recipe's rule (``structure-utility-area-short``)
 cloned in every id (``--preset learned-one-rule``): models ``learned_suas_<kind>_seed<N>`` in
 ``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``; ``--track
-learned-house-rule``, of the recipe as it is now, whose realistic seed-0 model is the package's (that rule, the ``gain`` rule in houses, a
-scorer that sees the decision's context): models ``learned_hr_<kind>_seed<N>`` in
+learned-house-rule``, of the recipe as it is now (that rule, the ``gain`` rule in houses, a
+scorer that sees the decision's context), whose realistic seed-0 model is the package's: models ``learned_hr_<kind>_seed<N>`` in
 ``experiments/results/learned_hr_models/``, reported in ``learned_hr_seeds.md``.
 """
 
@@ -73,6 +73,10 @@ class Track:
         committed: Models kept elsewhere than ``models``, by name.
         teacher: The rule a learned model must have cloned (its ``.json``'s ``config.teacher``;
             ``structure`` where the ``.json`` predates the option); ``None``: not checked.
+        house_rule: Whether its models clone the ``learned`` preset's own rules per id with a
+            scorer that reads the decision's context (``config.teacher_by_id`` and
+            ``config.scorer_context``; neither, where the ``.json`` predates them); checked
+            with ``teacher``.
     """
 
     prefix: str
@@ -84,6 +88,7 @@ class Track:
     preset: str
     committed: dict[str, Path] = field(default_factory=dict)
     teacher: str | None = None
+    house_rule: bool = False
 
     @property
     def name_pattern(self) -> re.Pattern:
@@ -99,7 +104,7 @@ TRACKS = {
         "learned_seeds",
         "The learned explorer across training seeds: realistic-trained and random-trained",
         "learned",
-        "learned --teacher structure",
+        "learned-one-rule --teacher structure",
         teacher="structure",
     ),
     "ppo-global-map": Track(
@@ -118,7 +123,7 @@ TRACKS = {
         "learned_su_seeds",
         "The learned explorer cloned from the structure-utility rule: realistic-trained and random-trained",
         "learned (structure-utility)",
-        "learned --teacher structure-utility",
+        "learned-one-rule --teacher structure-utility",
         teacher="structure-utility",
     ),
     "learned-structure-utility-area": Track(
@@ -128,7 +133,7 @@ TRACKS = {
         "learned_sua_seeds",
         "The learned explorer cloned from the structure-utility-area rule: realistic-trained and random-trained",
         "learned (structure-utility-area)",
-        "learned --teacher structure-utility-area",
+        "learned-one-rule --teacher structure-utility-area",
         teacher="structure-utility-area",
     ),
     "learned-structure-utility-area-short": Track(
@@ -152,6 +157,7 @@ TRACKS = {
         # the realistic seed-0 model is the package's own (the recipe)
         {"learned_hr_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
         "structure-utility-area-short",
+        house_rule=True,
     ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, the
@@ -268,18 +274,25 @@ def find_models(folder: Path, track: Track = TRACKS["learned"]) -> dict[str, Pat
 
 
 def _check_teacher(meta: Path, track: Track) -> None:
-    """Refuse a model whose ``.json`` says it cloned another rule than the track's."""
+    """Refuse a model whose ``.json`` says it cloned other rules than the track's."""
     import json
 
+    from realistic_indoor.agents.rl.learned import learned_preset
     from realistic_indoor.errors import ConfigError
 
     if track.teacher is None or not meta.is_file():
         return
-    teacher = json.loads(meta.read_text()).get("config", {}).get("teacher", "structure")
-    if teacher != track.teacher:
+    config = json.loads(meta.read_text()).get("config", {})
+    teacher = config.get("teacher", "structure")
+    recipe = learned_preset("learned")
+    house_rule = [tuple(pair) for pair in config.get("teacher_by_id", [])] == list(
+        recipe.teacher_by_id
+    ) and config.get("scorer_context", False) is True
+    if teacher != track.teacher or house_rule != track.house_rule:
+        said = "with the house rule and the context" if house_rule else "in every id"
         raise ConfigError(
-            f"{meta.name}: the model cloned the {teacher} rule, and the {track.prefix} models clone "
-            f"{track.teacher}; move it out of the folder or train it with --teacher {track.teacher}"
+            f"{meta.name}: the model cloned the {teacher} rule {said}, which the {track.prefix} models "
+            f"do not; move it out of the folder or train it with --preset {track.preset}"
         )
 
 

@@ -106,7 +106,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--teacher",
         choices=TEACHERS,
         help="the learned presets only: the classical rule cloned before MaskablePPO, in every id (default: "
-        f"the preset's, {DEFAULT_TEACHER}, with the gain rule in houses)",
+        f"the preset's: {DEFAULT_TEACHER}, and for the learned preset the gain rule in houses)",
     )
     p.add_argument(
         "--out",
@@ -314,7 +314,7 @@ def _train(args: argparse.Namespace, config, model_path: Path) -> None:
 
 
 def _rules(config) -> str:
-    """The cloned rules in words: ``the structure rule (the gain rule in HouseExplore-v0)``."""
+    """The cloned rules in words: ``structure rule (the gain rule in HouseExplore-v0)``."""
     other = [
         f"the {rule} rule in {env_id}" for env_id, rule in config.teacher_by_id if env_id in config.env_ids
     ]

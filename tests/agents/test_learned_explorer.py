@@ -347,11 +347,37 @@ def test_learned_config__a_rule_per_id_and_one_line_errors_for_bad_pairs():
     recipe = learned_preset("learned")
     assert recipe.rule_for("HouseExplore-v0") == "gain"
     assert recipe.rule_for("OfficeExplore-v0") == recipe.rule_for("SchoolExplore-v0") == DEFAULT_TEACHER
-    assert learned_preset("learned-one-rule").rule_for("HouseExplore-v0") == DEFAULT_TEACHER
-    for pairs in ((("HouseExplore-v0", "no-such-rule"),), (("NoSuch-v0", "gain"),), (("HouseExplore-v0",),)):
+    one_rule = learned_preset("learned-one-rule")
+    assert one_rule.rule_for("HouseExplore-v0") == DEFAULT_TEACHER and one_rule.scorer_context is False
+    for pairs, says in (
+        (
+            (("HouseExplore-v0", "no-such-rule"),),
+            "('HouseExplore-v0', 'no-such-rule') is not an (env id, rule) pair",
+        ),
+        ((("NoSuch-v0", "gain"),), "('NoSuch-v0', 'gain') is not an (env id, rule) pair"),
+        ((("HouseExplore-v0",),), "('HouseExplore-v0',) is not"),
+        ((("HouseExplore-v0", ["gain"]),), "is not an (env id, rule) pair"),
+        (None, "must be (env id, rule) pairs, got None"),
+        ((("HouseExplore-v0", "gain"), ("HouseExplore-v0", "frontier")), "names HouseExplore-v0 twice"),
+    ):
         with pytest.raises(ConfigError) as err:
             LearnedConfig(teacher_by_id=pairs)
-        assert "\n" not in str(err.value) and "teacher" in str(err.value)
+        assert "\n" not in str(err.value) and says in str(err.value)
+    with pytest.raises(ConfigError, match="scorer_context must be True or False, got 'false'"):
+        LearnedConfig(scorer_context="false")
+
+
+def test_learned_models__one_saved_before_the_context_loads_without_it():
+    """A model of the one-rule recipe (saved before the option) keeps its scorer of F + 1 inputs."""
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    from pathlib import Path
+
+    from realistic_indoor.agents.rl.learned_agent import load_learned_model
+
+    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_suas_models"
+    policy = load_learned_model(folder / "learned_suas_realistic_seed0.zip").policy
+    assert policy.context is False
+    assert policy.action_net.body[0].in_features == len(CANDIDATE_FEATURES) + 1
 
 
 @pytest.mark.slow

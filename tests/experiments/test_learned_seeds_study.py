@@ -117,7 +117,9 @@ def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules
     assert track.agent == "learned"
     meta.write_text(json.dumps({"config": {"teacher": "structure"}}))
     with pytest.raises(
-        ConfigError, match="cloned the structure rule, and the learned_su models clone structure-utility"
+        ConfigError,
+        match=r"cloned the structure rule in every id, which the learned_su models do not; .* "
+        "--preset learned-one-rule --teacher structure-utility",
     ):
         module.find_models(tmp_path, track)
     meta.write_text(json.dumps({"config": {}}))  # a model from before the option cloned structure
@@ -126,19 +128,35 @@ def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules
 
 
 def test_recipe_track__its_seed_0_model_is_the_package_one(tmp_path):
+    from realistic_indoor.agents.rl.learned import learned_preset
     from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL
     from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER
+    from realistic_indoor.errors import ConfigError
 
     module = _load()
     track = module.TRACKS["learned-house-rule"]
-    assert track.teacher == DEFAULT_TEACHER  # the recipe's rule (and gain in houses)
-    (tmp_path / "learned_hr_realistic_seed0.json").write_text(
-        json.dumps({"config": {"teacher": "structure-utility-area-short"}})
-    )
+    assert track.teacher == DEFAULT_TEACHER and track.house_rule  # the recipe: gain in houses, the context
+    meta = tmp_path / "learned_hr_realistic_seed0.json"
+    meta.write_text(json.dumps({"config": learned_preset("learned").to_dict()}))
     (tmp_path / "learned_hr_random_seed0.zip").write_bytes(b"")
     found = module.find_models(tmp_path, track)
     assert list(found) == ["learned_hr_realistic_seed0", "learned_hr_random_seed0"]
     assert found["learned_hr_realistic_seed0"] == DEFAULT_MODEL
+    # a model of the one-rule recipe, the same teacher, belongs to the other track, and back
+    meta.write_text(json.dumps({"config": learned_preset("learned-one-rule").to_dict()}))
+    with pytest.raises(
+        ConfigError, match=r"in every id, which the learned_hr models do not; .* --preset learned$"
+    ):
+        module.find_models(tmp_path, track)
+    suas = module.TRACKS["learned-structure-utility-area-short"]
+    (tmp_path / "learned_suas_realistic_seed0.json").write_text(
+        json.dumps({"config": learned_preset("learned").to_dict()})
+    )
+    (tmp_path / "learned_suas_realistic_seed0.zip").write_bytes(b"")
+    with pytest.raises(
+        ConfigError, match="with the house rule and the context, which the learned_suas models do not"
+    ):
+        module.find_models(tmp_path, suas)
     # the earlier recipes' tracks have no committed model any more: their seed-0 models lie in
     # their folders
     for name in ("learned", "learned-structure-utility-area", "learned-structure-utility-area-short"):

@@ -76,7 +76,9 @@ class LearnedConfig:
             offices, schools and houses are all trained on.
         n_candidates: Candidate goals per decision (K).
         n_envs: Environments run in parallel (sub-processes when more than one).
-        teacher: The rule cloned (a key of :data:`~realistic_indoor.agents.rl.teachers.TEACHERS`).
+        teacher: The rule cloned (a key of :data:`~realistic_indoor.agents.rl.teachers.TEACHERS`)
+            in the ids ``teacher_by_id`` does not name (to clone one rule everywhere, set
+            ``teacher_by_id=()`` too, as ``train --teacher`` does).
         teacher_by_id: Pairs ``(env id, rule)``: the rule cloned in that id's episodes instead
             of ``teacher`` (by default ``gain`` in houses, where it leads the nearest frontier
             on the tuning seeds and ``teacher`` does not). The policy is not told the id: with
@@ -149,13 +151,11 @@ class LearnedConfig:
             raise ConfigError(
                 f"LearnedConfig.teacher must be one of {', '.join(TEACHERS)}, got {self.teacher!r}"
             )
-        by_id = tuple(tuple(pair) for pair in self.teacher_by_id)
-        if any(len(pair) != 2 or pair[0] not in PRESETS or pair[1] not in TEACHERS for pair in by_id):
+        object.__setattr__(self, "teacher_by_id", _rule_pairs(self.teacher_by_id))
+        if not isinstance(self.scorer_context, bool):
             raise ConfigError(
-                f"LearnedConfig.teacher_by_id must be (registered env id, rule) pairs, rules of "
-                f"{', '.join(TEACHERS)}; got {self.teacher_by_id!r}"
+                f"LearnedConfig.scorer_context must be True or False, got {self.scorer_context!r}"
             )
-        object.__setattr__(self, "teacher_by_id", by_id)
         for name in ("bc_decisions", "ppo_decisions", "seed"):
             require_int("LearnedConfig", name, getattr(self, name), 0)
         for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):
@@ -211,6 +211,32 @@ def learned_preset(name: str, **changes: Any) -> LearnedConfig:
     if name not in LEARNED_PRESETS:
         raise ConfigError(f"unknown learned preset {name!r}; presets: {', '.join(LEARNED_PRESETS)}")
     return LearnedConfig(**{**LEARNED_PRESETS[name], **changes})
+
+
+def _rule_pairs(pairs: Any) -> tuple[tuple[str, str], ...]:
+    """``pairs`` as a tuple of ``(env id, rule)``, each id once.
+
+    Raises:
+        ConfigError: Naming the first pair that is not a registered id with a known rule.
+    """
+    from realistic_indoor.envs import PRESETS
+
+    hint = f"registered ids: {', '.join(PRESETS)}; rules: {', '.join(TEACHERS)}"
+    try:
+        items = list(pairs)
+    except TypeError:
+        raise ConfigError(
+            f"LearnedConfig.teacher_by_id must be (env id, rule) pairs, got {pairs!r}"
+        ) from None
+    out: list[tuple[str, str]] = []
+    for pair in items:
+        ok = isinstance(pair, (tuple, list)) and len(pair) == 2 and all(isinstance(v, str) for v in pair)
+        if not ok or pair[0] not in PRESETS or pair[1] not in TEACHERS:
+            raise ConfigError(f"LearnedConfig.teacher_by_id: {pair!r} is not an (env id, rule) pair; {hint}")
+        if any(pair[0] == seen for seen, _ in out):
+            raise ConfigError(f"LearnedConfig.teacher_by_id names {pair[0]} twice; give each id one rule")
+        out.append((pair[0], pair[1]))
+    return tuple(out)
 
 
 class LearnedEnvFactory:

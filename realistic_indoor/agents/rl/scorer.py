@@ -103,7 +103,10 @@ class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
         keys = tuple(observation_space.spaces)
         if keys != OBS_KEYS:
             raise ValueError(f"CandidatePolicy reads the observation keys {OBS_KEYS}, got {keys}")
-        kwargs["net_arch"] = {"pi": [], "vf": list(kwargs.get("net_arch") or [64, 64])}
+        arch = kwargs.get("net_arch")
+        # a dict when a saved policy is rebuilt from its own constructor parameters
+        vf = arch["vf"] if isinstance(arch, dict) else list(arch or [64, 64])
+        kwargs["net_arch"] = {"pi": [], "vf": list(vf)}
         super().__init__(observation_space, action_space, lr_schedule, **kwargs)
 
     def _build(self, lr_schedule: Any) -> None:

@@ -35,8 +35,9 @@ learned-structure-utility-area-short``, of the recipe's rule (``structure-utilit
 cloned in every id (``--preset learned-one-rule``): models ``learned_suas_<kind>_seed<N>`` in
 ``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``; ``--track
 learned-house-rule``, of the recipe as it is now (that rule, the ``gain`` rule in houses, a
-scorer that sees the decision's context), whose realistic seed-0 model is the package's: models ``learned_hr_<kind>_seed<N>`` in
-``experiments/results/learned_hr_models/``, reported in ``learned_hr_seeds.md``.
+scorer that sees the decision's context), whose realistic seed-0 model is the package's:
+models ``learned_hr_<kind>_seed<N>`` in ``experiments/results/learned_hr_models/``, reported in
+``learned_hr_seeds.md``.
 """
 
 from __future__ import annotations

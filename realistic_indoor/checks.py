@@ -14,7 +14,7 @@ from numbers import Integral, Real
 
 from realistic_indoor.errors import ConfigError
 
-__all__ = ["require_between", "require_int", "require_positive", "require_range"]
+__all__ = ["require_between", "require_bool", "require_int", "require_positive", "require_range"]
 
 
 def require_positive(owner: str, name: str, value: float, unit: str, allow_zero: bool = False) -> None:
@@ -47,6 +47,12 @@ def require_int(owner: str, name: str, value: int, minimum: int, maximum: int | 
         raise ConfigError(
             f"{_label(owner, name)} must be an integer in [{minimum}, {maximum}], got {value!r}"
         )
+
+
+def require_bool(owner: str, name: str, value: bool) -> None:
+    """Raise ``ConfigError`` unless ``value`` is ``True`` or ``False`` (a string ``"false"`` is refused)."""
+    if not isinstance(value, bool):
+        raise ConfigError(f"{_label(owner, name)} must be True or False, got {value!r}")
 
 
 def require_range(owner: str, name: str, value: float, low: float, high: float, unit: str) -> None:

@@ -43,7 +43,7 @@ import numpy as np
 
 from realistic_indoor.agents.rl.config import REALISTIC_IDS
 from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER, TEACHERS
-from realistic_indoor.checks import require_int, require_positive, require_range
+from realistic_indoor.checks import require_bool, require_int, require_positive, require_range
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import atomic_path, write_text
 from realistic_indoor.machine import describe_machine
@@ -152,10 +152,7 @@ class LearnedConfig:
                 f"LearnedConfig.teacher must be one of {', '.join(TEACHERS)}, got {self.teacher!r}"
             )
         object.__setattr__(self, "teacher_by_id", _rule_pairs(self.teacher_by_id))
-        if not isinstance(self.scorer_context, bool):
-            raise ConfigError(
-                f"LearnedConfig.scorer_context must be True or False, got {self.scorer_context!r}"
-            )
+        require_bool("LearnedConfig", "scorer_context", self.scorer_context)
         for name in ("bc_decisions", "ppo_decisions", "seed"):
             require_int("LearnedConfig", name, getattr(self, name), 0)
         for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):

@@ -75,7 +75,7 @@ class TakeTurns(gym.Env):
     @property
     def env_id(self) -> str:
         """The registered id of the episode under way (the turn's index for an env without one)."""
-        return self._id()
+        return _name(self.current, str(self.turn))
 
     def seeds_for(self, seed: int) -> list[int]:
         """The seeds a reset with ``seed`` gives the environments, in turn order.
@@ -101,12 +101,12 @@ class TakeTurns(gym.Env):
         self.turn = (self.turn + 1) % len(self.envs)
         own, self._seeds[self.turn] = self._seeds[self.turn], None
         obs, info = self.current.reset(seed=own, options=options)
-        return obs, {**info, "env_id": self._id()}
+        return obs, {**info, "env_id": self.env_id}
 
     def step(self, action: Any) -> tuple[Any, float, bool, bool, dict]:
         """A step of the current environment; its ``info`` gains ``env_id`` (the id, or the turn's index)."""
         obs, reward, terminated, truncated, info = self.current.step(action)
-        return obs, reward, terminated, truncated, {**info, "env_id": self._id()}
+        return obs, reward, terminated, truncated, {**info, "env_id": self.env_id}
 
     def render(self) -> Any:
         """The current environment's frame."""
@@ -126,9 +126,6 @@ class TakeTurns(gym.Env):
     def has_wrapper_attr(self, name: str) -> bool:
         """Whether this object or the current environment has ``name``."""
         return hasattr(self, name) or self.current.has_wrapper_attr(name)
-
-    def _id(self) -> str:
-        return _name(self.current, str(self.turn))
 
 
 def _name(env: gym.Env, default: str | None = None) -> str:

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from realistic_indoor.checks import require_between
+from realistic_indoor.checks import require_between, require_bool
 from realistic_indoor.errors import ConfigError
 from realistic_indoor.files import write_bytes, write_text
 from realistic_indoor.sim.raster import DEFAULT_WALL_THICKNESS_M  # as the simulator and ROS map draw walls
@@ -87,10 +87,7 @@ class WorldOptions:
                 f"WorldOptions.door_height_m must be at most wall_height_m ({self.wall_height_m!r} m), "
                 f"got {self.door_height_m!r}"
             )
-        if not isinstance(self.exterior_doors_open, bool):
-            raise ConfigError(
-                f"WorldOptions.exterior_doors_open must be True or False, got {self.exterior_doors_open!r}"
-            )
+        require_bool("WorldOptions", "exterior_doors_open", self.exterior_doors_open)
 
 
 def write_world(

@@ -34,10 +34,14 @@ rule (``realistic-indoor train --preset learned-one-rule --teacher structure-uti
 learned-structure-utility-area-short``, of the recipe's rule (``structure-utility-area-short``)
 cloned in every id (``--preset learned-one-rule``): models ``learned_suas_<kind>_seed<N>`` in
 ``experiments/results/learned_suas_models/``, reported in ``learned_suas_seeds.md``; ``--track
-learned-house-rule``, of the recipe as it is now (that rule, the ``gain`` rule in houses, a
-scorer that sees the decision's context), whose realistic seed-0 model is the package's:
-models ``learned_hr_<kind>_seed<N>`` in ``experiments/results/learned_hr_models/``, reported in
-``learned_hr_seeds.md``.
+learned-house-rule``, of that rule with the ``gain`` rule in houses and a scorer that sees
+three figures of the decision (``--preset learned-house-rule``): models
+``learned_hr_<kind>_seed<N>`` in ``experiments/results/learned_hr_models/``, reported in
+``learned_hr_seeds.md``; ``--track learned-pooled``, of the recipe as it is now (those rules, a
+scorer that also sees a learned summary of the decision's candidates, every id weighed alike
+in cloning: ``--preset learned``), whose realistic seed-0 model is the package's: models
+``learned_pool_<kind>_seed<N>`` in ``experiments/results/learned_pool_models/``, reported in
+``learned_pool_seeds.md``.
 """
 
 from __future__ import annotations
@@ -74,10 +78,9 @@ class Track:
         committed: Models kept elsewhere than ``models``, by name.
         teacher: The rule a learned model must have cloned (its ``.json``'s ``config.teacher``;
             ``structure`` where the ``.json`` predates the option); ``None``: not checked.
-        house_rule: Whether its models clone the ``learned`` preset's own rules per id with a
-            scorer that reads the decision's context (``config.teacher_by_id`` and
-            ``config.scorer_context``; neither, where the ``.json`` predates them); checked
-            with ``teacher``.
+        recipe: The learned preset its models were trained with: their ``.json``'s rules per id
+            and scorer (:data:`RECIPE_KEYS`) must be that preset's (with ``teacher``); a key the
+            ``.json`` predates counts as the recipe before it. Checked with ``teacher``.
     """
 
     prefix: str
@@ -89,7 +92,7 @@ class Track:
     preset: str
     committed: dict[str, Path] = field(default_factory=dict)
     teacher: str | None = None
-    house_rule: bool = False
+    recipe: str = "learned-one-rule"
 
     @property
     def name_pattern(self) -> re.Pattern:
@@ -154,17 +157,30 @@ TRACKS = {
         "learned_hr_seeds",
         "The learned explorer cloned from the structure-utility-area-short rule, the gain rule in houses",
         "learned (house rule)",
+        "learned-house-rule",
+        teacher="structure-utility-area-short",
+        recipe="learned-house-rule",
+    ),
+    "learned-pooled": Track(
+        "learned_pool",
+        "learned",
+        ROOT / "experiments" / "results" / "learned_pool_models",
+        "learned_pool_seeds",
+        "The learned explorer with the pooled scorer and balanced cloning (the recipe)",
+        "learned (pooled)",
         "learned",
         # the realistic seed-0 model is the package's own (the recipe)
-        {"learned_hr_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
+        {"learned_pool_realistic_seed0": ROOT / "realistic_indoor" / "data" / "learned_explorer.zip"},
         "structure-utility-area-short",
-        house_rule=True,
+        recipe="learned",
     ),
 }
 """The study's tracks: the learned explorer, primitive-action PPO given the global map, the
 learned explorer cloned from the ``structure-utility``, ``structure-utility-area`` and
-``structure-utility-area-short`` rules (``--teacher``) instead of ``structure``, and the recipe
-that clones the ``gain`` rule in houses with a scorer that sees the decision's context."""
+``structure-utility-area-short`` rules (``--teacher``) instead of ``structure``, the recipe
+that clones the ``gain`` rule in houses with a scorer that sees the decision's context, and the
+recipe as it is, whose scorer also sees a learned summary of the candidates and whose cloning
+weighs every id alike."""
 NAME = TRACKS["learned"].name_pattern
 
 TARGETS = (
@@ -270,12 +286,23 @@ def find_models(folder: Path, track: Track = TRACKS["learned"]) -> dict[str, Pat
         if name not in found and (folder / f"{name}.json").is_file() and path.is_file():
             found[name] = path
     for name in found:
-        _check_teacher(folder / f"{name}.json", track)
+        _check_recipe(folder / f"{name}.json", track)
     return dict(sorted(found.items(), key=lambda item: _kind_seed(item[0], pattern)))
 
 
-def _check_teacher(meta: Path, track: Track) -> None:
-    """Refuse a model whose ``.json`` says it cloned other rules than the track's."""
+RECIPE_KEYS = {
+    "teacher": "structure",
+    "teacher_by_id": [],
+    "scorer_context": False,
+    "scorer_pool": 0,
+    "bc_balance": False,
+}
+"""The training options that tell the learned explorer's recipes apart, with the value a model's
+``.json`` from before each option means."""
+
+
+def _check_recipe(meta: Path, track: Track) -> None:
+    """Refuse a model whose ``.json`` says it was trained with other rules or another scorer than the track's."""
     import json
 
     from realistic_indoor.agents.rl.learned import learned_preset
@@ -284,16 +311,15 @@ def _check_teacher(meta: Path, track: Track) -> None:
     if track.teacher is None or not meta.is_file():
         return
     config = json.loads(meta.read_text()).get("config", {})
-    teacher = config.get("teacher", "structure")
-    recipe = learned_preset("learned")
-    house_rule = [tuple(pair) for pair in config.get("teacher_by_id", [])] == list(
-        recipe.teacher_by_id
-    ) and config.get("scorer_context", False) is True
-    if teacher != track.teacher or house_rule != track.house_rule:
-        said = "with the house rule and the context" if house_rule else "in every id"
+    mine = {key: config.get(key, before) for key, before in RECIPE_KEYS.items()}
+    wanted = learned_preset(track.recipe, teacher=track.teacher).to_dict()
+    differ = [key for key in RECIPE_KEYS if mine[key] != wanted[key]]
+    if differ:
+        said = ", ".join(f"{key} {mine[key]!r}" for key in differ)
+        theirs = ", ".join(f"{key} {wanted[key]!r}" for key in differ)
         raise ConfigError(
-            f"{meta.name}: the model cloned the {teacher} rule {said}, which the {track.prefix} models "
-            f"do not; move it out of the folder or train it with --preset {track.preset}"
+            f"{meta.name}: the model was trained with {said}, which the {track.prefix} models are not "
+            f"({theirs}); move it out of the folder or train it with --preset {track.preset}"
         )
 
 

@@ -34,8 +34,12 @@ presets (measured on 2 CPU cores):
            limit left (time_left) in the policy's view; its environments run in sub-processes
   learned  the learned explorer on offices, schools and houses at their default sizes and
            step limits: 20,000 decisions cloning the structure-utility-area-short rule
-           (the gain rule in houses; --teacher names one rule for every id), then 40,000 of
-           MaskablePPO (--timesteps sets these; 24 to 39 minutes), then 2 episodes per agent and id
+           (the gain rule in houses; --teacher names one rule for every id), every id
+           weighed alike, then 40,000 of MaskablePPO (--timesteps sets these; 24 to 39
+           minutes), then 2 episodes per agent and id; the policy's scorer sees the decision's
+           context and a learned summary of all its candidates
+  learned-house-rule  the learned recipe before the scorer's summary and the balanced
+           cloning: the same rules, a scorer that sees three figures of the decision
   learned-one-rule  the learned recipe before houses had their own rule: one rule in every
            id, a policy that scores each candidate alone
   learned-smoke  seconds, on houses: checks the learned explorer's set-up
@@ -106,7 +110,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         "--teacher",
         choices=TEACHERS,
         help="the learned presets only: the classical rule cloned before MaskablePPO, in every id (default: "
-        f"the preset's: {DEFAULT_TEACHER}, and for the learned preset the gain rule in houses)",
+        f"the preset's: {DEFAULT_TEACHER}, and for the learned and learned-house-rule presets the gain rule "
+        "in houses)",
     )
     p.add_argument(
         "--out",
@@ -321,6 +326,22 @@ def _rules(config) -> str:
     return f"{config.teacher} rule" + (f" ({'; '.join(other)})" if other else "")
 
 
+def _scorer(config) -> str:
+    """What the scorer sees and how cloning weighs the ids, in words."""
+    sees = [
+        *(["the decision's context"] if config.scorer_context else []),
+        *(
+            [
+                f"a pooled summary of the decision (the mean and maximum of {config.scorer_pool} learned figures)"
+            ]
+            if config.scorer_pool
+            else []
+        ),
+    ]
+    scorer = f"a scorer that sees {' and '.join(sees)}" if sees else "a scorer of each candidate alone"
+    return scorer + (", every id weighed alike in cloning" if config.bc_balance else "")
+
+
 def _train_learned(args: argparse.Namespace, config, model_path: Path) -> None:
     from realistic_indoor.agents.rl.learned import require_learned, train_learned
 
@@ -328,7 +349,7 @@ def _train_learned(args: argparse.Namespace, config, model_path: Path) -> None:
     print(
         f"training the learned explorer ({args.preset} preset, seed {config.seed}) on {', '.join(config.env_ids)}: "
         f"{config.bc_decisions:,} decisions of cloning the {_rules(config)}, then {config.ppo_decisions:,} of "
-        "MaskablePPO; "
+        f"MaskablePPO; {_scorer(config)}; "
         f"model to {model_path}",
         flush=True,
     )

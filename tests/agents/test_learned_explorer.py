@@ -226,17 +226,27 @@ def test_committed_model__came_from_the_recipe_and_its_record_is_beside_it():
     from realistic_indoor.agents.rl.learned import learned_preset
     from realistic_indoor.agents.rl.learned_agent import DEFAULT_MODEL, load_learned_model
 
-    folder = Path(__file__).resolve().parents[2] / "experiments" / "results" / "learned_hr_models"
-    record = json.loads((folder / "learned_hr_realistic_seed0.json").read_text())
+    results = Path(__file__).resolve().parents[2] / "experiments" / "results"
+    folder = results / "learned_pool_models"
+    record = json.loads((folder / "learned_pool_realistic_seed0.json").read_text())
     assert record["config"] == learned_preset("learned").to_dict()  # the default recipe, seed 0
     assert record["config"]["teacher"] == "structure-utility-area-short"
     assert record["config"]["teacher_by_id"] == [["HouseExplore-v0", "gain"]]
-    log = (folder / "learned_hr_realistic_seed0.log").read_text()
-    assert f"saved runs/ctx/learned_ctx_realistic_seed0.zip after {record['seconds']:.0f} s" in log
-    # the study's models keep no copy: the package's file is the one, its scorer reads the context
-    assert not (folder / "learned_hr_realistic_seed0.zip").exists()
+    log = (folder / "learned_pool_realistic_seed0.log").read_text()
+    assert f"saved runs/pool/learned_pool_realistic_seed0.zip after {record['seconds']:.0f} s" in log
+    # the study's models keep no copy: the package's file is the one; the model before it lies
+    # with its own track's
+    assert not (folder / "learned_pool_realistic_seed0.zip").exists()
+    before = json.loads((results / "learned_hr_models" / "learned_hr_realistic_seed0.json").read_text())
+    assert {**before["config"], "scorer_pool": 0, "bc_balance": False} == learned_preset(
+        "learned-house-rule"
+    ).to_dict()
     pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
-    assert load_learned_model(DEFAULT_MODEL).policy.context is True
+    policy = load_learned_model(DEFAULT_MODEL).policy
+    assert policy.context is True and policy.pool == record["config"]["scorer_pool"] == 16
+    assert (
+        load_learned_model(results / "learned_hr_models" / "learned_hr_realistic_seed0.zip").policy.pool == 0
+    )
 
 
 @pytest.mark.slow
@@ -279,6 +289,7 @@ def test_train_command__learned_smoke_preset_writes_a_model_and_its_log(tmp_path
     agent = make_agent(f"learned:{out}", gym.make("HouseExplore-v0"))
     assert agent.model.action_space.n == 16
     assert agent.model.policy.context is True  # the recipe's scorer, saved and loaded with it
+    assert agent.model.policy.pool == 16
 
 
 @pytest.mark.slow
@@ -340,6 +351,47 @@ def test_candidate_scorer__with_context_a_score_depends_on_the_other_candidates(
         assert (float(first[0]) != float(first[1])) is context
 
 
+def test_candidate_scorer__the_pooled_summary_ignores_order_and_rows_not_offered():
+    pytest.importorskip("sb3_contrib", reason="the rl extra (sb3-contrib, torch) is not installed")
+    import torch
+
+    from realistic_indoor.agents.rl.scorer import CandidateScorer
+
+    flat, _ = _rows(
+        {"path_cost": 0.2, "size": 0.3, "unobserved": 0.1},
+        {"path_cost": 0.5, "in_room": 1.0, "unobserved": 0.4},
+        {"path_cost": 0.9, "size": 0.05},
+    )
+    rows = flat.reshape(4, F)
+    swapped = rows[[2, 1, 0, 3]]  # the first and third candidates trade places
+    hidden = rows.copy()
+    hidden[3, 1:] = 0.7  # a row not offered (valid 0) with features of its own
+    louder = rows.copy()
+    louder[1, CANDIDATE_FEATURES.index("unobserved")] = 2.0  # only the second candidate changes
+    batch = torch.as_tensor(
+        np.stack([np.append(r.ravel(), 0.5) for r in (rows, swapped, hidden, louder)]), dtype=torch.float32
+    )
+    for pool in (0, 8):
+        torch.manual_seed(0)
+        scorer = CandidateScorer(4, pool=pool)
+        torch.nn.init.normal_(scorer.head.weight)  # the head starts near 0; make differences visible
+        with torch.no_grad():
+            got = scorer(batch)
+        assert got[1, [2, 1, 0]].tolist() == pytest.approx(got[0, :3].tolist(), abs=1e-6)
+        assert got[2, :3].tolist() == pytest.approx(got[0, :3].tolist(), abs=1e-6)
+        # alone, a row's score is its own; pooled, the first candidate's score sees the second's area
+        assert (abs(float(got[3, 0] - got[0, 0])) > 1e-6) is bool(pool)
+
+
+def test_cloning_weights__every_id_weighs_alike_and_the_mean_weight_is_1():
+    from realistic_indoor.agents.rl.learned import _id_weights
+
+    ids = np.array(["house", "school", "school", "school", "house", "school"])
+    weights = _id_weights(ids)
+    # 6 decisions, 2 ids: each id's decisions weigh 3 in all, houses 3/2 each, schools 3/4 each
+    assert weights.tolist() == pytest.approx([1.5, 0.75, 0.75, 0.75, 1.5, 0.75])
+
+
 def test_learned_config__a_rule_per_id_and_one_line_errors_for_bad_pairs():
     from realistic_indoor.agents.rl.learned import LearnedConfig, learned_preset
     from realistic_indoor.agents.rl.teachers import DEFAULT_TEACHER
@@ -365,6 +417,11 @@ def test_learned_config__a_rule_per_id_and_one_line_errors_for_bad_pairs():
         assert "\n" not in str(err.value) and says in str(err.value)
     with pytest.raises(ConfigError, match="scorer_context must be True or False, got 'false'"):
         LearnedConfig(scorer_context="false")
+    with pytest.raises(ConfigError, match="bc_balance must be True or False, got 1"):
+        LearnedConfig(bc_balance=1)
+    with pytest.raises(ConfigError, match="scorer_pool") as err:
+        LearnedConfig(scorer_pool=-4)
+    assert "\n" not in str(err.value)
 
 
 def test_learned_models__one_saved_before_the_context_loads_without_it():

@@ -1,4 +1,5 @@
 import json
+import re
 import shutil
 from types import SimpleNamespace
 
@@ -118,12 +119,13 @@ def test_structure_utility_track__takes_its_own_models_and_refuses_another_rules
     meta.write_text(json.dumps({"config": {"teacher": "structure"}}))
     with pytest.raises(
         ConfigError,
-        match=r"cloned the structure rule in every id, which the learned_su models do not; .* "
+        match=r"trained with teacher 'structure', which the learned_su models are not \(teacher "
+        r"'structure-utility'\); .* "
         "--preset learned-one-rule --teacher structure-utility",
     ):
         module.find_models(tmp_path, track)
     meta.write_text(json.dumps({"config": {}}))  # a model from before the option cloned structure
-    with pytest.raises(ConfigError, match="cloned the structure rule"):
+    with pytest.raises(ConfigError, match="trained with teacher 'structure',"):
         module.find_models(tmp_path, track)
 
 
@@ -134,32 +136,53 @@ def test_recipe_track__its_seed_0_model_is_the_package_one(tmp_path):
     from realistic_indoor.errors import ConfigError
 
     module = _load()
-    track = module.TRACKS["learned-house-rule"]
-    assert track.teacher == DEFAULT_TEACHER and track.house_rule  # the recipe: gain in houses, the context
-    meta = tmp_path / "learned_hr_realistic_seed0.json"
+    track = module.TRACKS["learned-pooled"]
+    assert track.teacher == DEFAULT_TEACHER and track.recipe == "learned"
+    meta = tmp_path / "learned_pool_realistic_seed0.json"
     meta.write_text(json.dumps({"config": learned_preset("learned").to_dict()}))
-    (tmp_path / "learned_hr_random_seed0.zip").write_bytes(b"")
+    (tmp_path / "learned_pool_random_seed0.zip").write_bytes(b"")
     found = module.find_models(tmp_path, track)
-    assert list(found) == ["learned_hr_realistic_seed0", "learned_hr_random_seed0"]
-    assert found["learned_hr_realistic_seed0"] == DEFAULT_MODEL
-    # a model of the one-rule recipe, the same teacher, belongs to the other track, and back
-    meta.write_text(json.dumps({"config": learned_preset("learned-one-rule").to_dict()}))
+    assert list(found) == ["learned_pool_realistic_seed0", "learned_pool_random_seed0"]
+    assert found["learned_pool_realistic_seed0"] == DEFAULT_MODEL
+    # a model of the recipe before (same rules, no pooled summary, no balance) belongs to its own track
+    meta.write_text(json.dumps({"config": learned_preset("learned-house-rule").to_dict()}))
     with pytest.raises(
-        ConfigError, match=r"in every id, which the learned_hr models do not; .* --preset learned$"
+        ConfigError,
+        match=r"with scorer_pool 0, bc_balance False, which the learned_pool models are not \(scorer_pool 16, bc_balance True\); .* --preset learned$",
     ):
         module.find_models(tmp_path, track)
+    # and the other way: the house-rule track refuses the recipe's model and the one-rule recipe's
+    hr = module.TRACKS["learned-house-rule"]
+    (tmp_path / "learned_hr_realistic_seed0.zip").write_bytes(b"")
+    hr_meta = tmp_path / "learned_hr_realistic_seed0.json"
+    hr_meta.write_text(json.dumps({"config": learned_preset("learned-house-rule").to_dict()}))
+    assert list(module.find_models(tmp_path, hr)) == ["learned_hr_realistic_seed0"]
+    for preset, differ in (
+        ("learned", "scorer_pool 16, bc_balance True"),
+        ("learned-one-rule", "teacher_by_id [], scorer_context False"),
+    ):
+        hr_meta.write_text(json.dumps({"config": learned_preset(preset).to_dict()}))
+        with pytest.raises(
+            ConfigError, match=f"with {re.escape(differ)}, which the learned_hr models are not"
+        ):
+            module.find_models(tmp_path, hr)
     suas = module.TRACKS["learned-structure-utility-area-short"]
     (tmp_path / "learned_suas_realistic_seed0.json").write_text(
         json.dumps({"config": learned_preset("learned").to_dict()})
     )
     (tmp_path / "learned_suas_realistic_seed0.zip").write_bytes(b"")
     with pytest.raises(
-        ConfigError, match="with the house rule and the context, which the learned_suas models do not"
+        ConfigError, match=r"teacher_by_id \[\['HouseExplore-v0', 'gain'\]\], .* learned_suas models"
     ):
         module.find_models(tmp_path, suas)
     # the earlier recipes' tracks have no committed model any more: their seed-0 models lie in
     # their folders
-    for name in ("learned", "learned-structure-utility-area", "learned-structure-utility-area-short"):
+    for name in (
+        "learned",
+        "learned-structure-utility-area",
+        "learned-structure-utility-area-short",
+        "learned-house-rule",
+    ):
         assert module.TRACKS[name].committed == {}
         found = module.find_models(module.TRACKS[name].models, module.TRACKS[name])
         seed0 = next(path for model, path in found.items() if model.endswith("_realistic_seed0"))

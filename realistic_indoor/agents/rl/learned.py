@@ -20,7 +20,9 @@ The recipe, :func:`train_learned`:
    their choices (cross-entropy) and the critic to the discounted returns that followed. The
    policy is not told the building type; its scorer sees, beside each candidate, what the
    decision offers as a whole (:attr:`LearnedConfig.scorer_context`), which tells most of a
-   house's decisions from an office's.
+   house's decisions from an office's, and a learned summary of all the decision's candidates
+   (:attr:`LearnedConfig.scorer_pool`); each id's decisions weigh alike in the cloning loss
+   (:attr:`LearnedConfig.bc_balance`: a house has a tenth of a school's decisions).
 2. **MaskablePPO** from there, for the rest of the budget.
 
 The log reports decisions/s, primitive steps/s and the share of time collecting against
@@ -85,6 +87,14 @@ class LearnedConfig:
             ``scorer_context`` it can tell a house's decisions by what they offer.
         scorer_context: Give the policy's scorer the decision's figures
             (:data:`~realistic_indoor.agents.rl.scorer.CONTEXT_FEATURES`) beside each candidate.
+        scorer_pool: Width of the learned summary of the whole decision the scorer gives every
+            candidate (:class:`~realistic_indoor.agents.rl.scorer.CandidateScorer`'s ``pool``;
+            0: none). With it the policy follows each id's rule more closely (cloning agreement
+            in houses 87% against 68% on held-out decisions of seed 0, offices and schools
+            97% against 93-95%).
+        bc_balance: Weight the cloned decisions so that every id counts alike in the cloning
+            loss (a house has a tenth of a school's decisions: without it the policy learns the
+            houses' rule from 6% of the data).
         bc_decisions: Decisions of the teacher's rule collected for behaviour cloning (0: none).
         bc_epochs: Passes of behaviour cloning over them.
         ppo_decisions: Decisions of MaskablePPO training after cloning (0: none).
@@ -113,6 +123,8 @@ class LearnedConfig:
     teacher: str = DEFAULT_TEACHER
     teacher_by_id: tuple[tuple[str, str], ...] = (("HouseExplore-v0", "gain"),)
     scorer_context: bool = True
+    scorer_pool: int = 16
+    bc_balance: bool = True
     bc_decisions: int = 20_000
     bc_epochs: int = 30
     ppo_decisions: int = 40_000
@@ -153,7 +165,8 @@ class LearnedConfig:
             )
         object.__setattr__(self, "teacher_by_id", _rule_pairs(self.teacher_by_id))
         require_bool("LearnedConfig", "scorer_context", self.scorer_context)
-        for name in ("bc_decisions", "ppo_decisions", "seed"):
+        require_bool("LearnedConfig", "bc_balance", self.bc_balance)
+        for name in ("bc_decisions", "ppo_decisions", "seed", "scorer_pool"):
             require_int("LearnedConfig", name, getattr(self, name), 0)
         for name in ("reward_scale", "learning_rate", "bc_learning_rate", "clip_range"):
             require_positive("LearnedConfig", name, getattr(self, name), "")
@@ -181,7 +194,8 @@ class LearnedConfig:
 
 LEARNED_PRESETS: dict[str, dict[str, Any]] = {
     "learned": {},
-    "learned-one-rule": {"teacher_by_id": (), "scorer_context": False},
+    "learned-house-rule": {"scorer_pool": 0, "bc_balance": False},
+    "learned-one-rule": {"teacher_by_id": (), "scorer_context": False, "scorer_pool": 0, "bc_balance": False},
     "learned-smoke": {
         "bc_decisions": 64,
         "bc_epochs": 1,
@@ -194,9 +208,11 @@ LEARNED_PRESETS: dict[str, dict[str, Any]] = {
     },
 }
 """Named overrides of :class:`LearnedConfig`: ``learned`` (the recipe: 20,000 cloned decisions,
-then 40,000 of MaskablePPO), ``learned-one-rule`` (the recipe before houses had a rule of their
-own: one rule cloned in every id, a scorer without the decision's context; the study's
-``learned_suas`` models), ``learned-smoke`` (seconds, on houses: checks the set-up)."""
+then 40,000 of MaskablePPO), ``learned-house-rule`` (the recipe before the scorer had its learned
+summary of the decision and cloning weighed every id alike: the study's ``learned_hr`` models),
+``learned-one-rule`` (the recipe before houses had a rule of their own: one rule cloned in every
+id, a scorer without the decision's context; the study's ``learned_suas`` models),
+``learned-smoke`` (seconds, on houses: checks the set-up)."""
 
 
 def learned_preset(name: str, **changes: Any) -> LearnedConfig:
@@ -316,7 +332,10 @@ def train_learned(
     meter = _Meter()
     try:
         model = sb3_contrib.MaskablePPO(
-            CandidatePolicy, venv, policy_kwargs={"context": config.scorer_context}, **ppo_arguments(config)
+            CandidatePolicy,
+            venv,
+            policy_kwargs={"context": config.scorer_context, "pool": config.scorer_pool},
+            **ppo_arguments(config),
         )
         bc = _clone(model, venv, config, meter, log) if config.bc_decisions else {}
         if config.ppo_decisions:
@@ -454,6 +473,10 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
     act_t = torch.as_tensor(np.concatenate(actions))
     mask_t = np.concatenate(masks)
     ret_t = torch.as_tensor(returns.reshape(-1), dtype=torch.float32)
+    flat_ids = np.asarray(ids).reshape(-1)
+    weight_t = torch.as_tensor(
+        _id_weights(flat_ids) if config.bc_balance else np.ones(len(flat_ids)), dtype=torch.float32
+    )
     policy = model.policy
     optimizer = torch.optim.Adam(policy.parameters(), lr=config.bc_learning_rate)
     n = len(act_t)
@@ -465,7 +488,10 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
             idx = order[lo : lo + config.batch_size]
             batch = {k: v[idx] for k, v in data.items()}
             values, log_prob, _ = policy.evaluate_actions(batch, act_t[idx], action_masks=mask_t[idx])
-            loss = -log_prob.mean() + 0.5 * torch.nn.functional.mse_loss(values.flatten(), ret_t[idx])
+            w = weight_t[idx]
+            loss = -(log_prob * w).sum() / w.sum() + 0.5 * torch.nn.functional.mse_loss(
+                values.flatten(), ret_t[idx]
+            )
             optimizer.zero_grad()
             loss.backward()
             optimizer.step()
@@ -477,7 +503,6 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
             f"cloning epoch {epoch + 1}/{config.bc_epochs}: loss {total / n:.4f}, agrees with the rule on {agree:.1%}"
         )
     same = (chosen == act_t).numpy()
-    flat_ids = np.asarray(ids).reshape(-1)
     by_id = {str(e): round(float(same[flat_ids == e].mean()), 4) for e in sorted(set(flat_ids.tolist()))}
     log("agreement by id: " + ", ".join(f"{e} {a:.1%}" for e, a in by_id.items()))
     return {
@@ -486,6 +511,12 @@ def _clone(model: Any, venv: Any, config: LearnedConfig, meter: _Meter, log: Cal
         "agreement": round(agree, 4),
         "agreement_by_id": by_id,
     }
+
+
+def _id_weights(ids: np.ndarray) -> np.ndarray:
+    """A weight per decision such that every id's decisions weigh alike in all, the mean weight 1."""
+    names, index, counts = np.unique(ids, return_inverse=True, return_counts=True)
+    return len(ids) / (len(names) * counts[index])
 
 
 def _discounted(rewards: np.ndarray, dones: np.ndarray, gamma: float) -> np.ndarray:

@@ -12,6 +12,13 @@ candidate: the share of the candidates on offer that lie in rooms, their number 
 and their mean path cost. A score can then depend on the kind of place the robot is in (a
 house's decisions mostly offer room frontiers only, a few metres away; an office's and a
 school's offer corridor frontiers too, farther apart), which a row alone does not say.
+
+With ``pool`` (a width W) each row also gets a learned summary of the whole decision: a second
+small MLP embeds every offered row in W figures, and their mean and their maximum over the
+offered candidates (2 W figures, the same for every row) join each row's input, as in Deep Sets
+(Zaheer et al., NeurIPS 2017). The summary does not depend on the candidates' order, and a
+candidate that is not offered changes nothing. It lets one network follow two rules where the
+three fixed figures cannot tell them apart.
 """
 
 from __future__ import annotations
@@ -24,7 +31,7 @@ from torch import nn
 
 from realistic_indoor.envs.macro import CANDIDATE_FEATURES
 
-__all__ = ["CONTEXT_FEATURES", "OBS_KEYS", "CandidatePolicy", "CandidateScorer"]
+__all__ = ["CONTEXT_FEATURES", "OBS_KEYS", "CandidatePolicy", "CandidateScorer", "decision_context"]
 
 OBS_KEYS = ("candidates", "time_left")
 """The observation keys the policy reads (in this order: stable-baselines3 concatenates the keys
@@ -43,15 +50,22 @@ class CandidateScorer(nn.Module):
         n_candidates: K.
         hidden: Widths of the hidden layers.
         context: Give every row the decision's :data:`CONTEXT_FEATURES` too.
+        pool: Width W of the learned summary of the decision given to every row (its mean and
+            maximum over the offered candidates, 2 W figures); 0: none.
     """
 
-    def __init__(self, n_candidates: int, hidden: tuple[int, ...] = (64, 64), context: bool = False) -> None:
+    def __init__(
+        self, n_candidates: int, hidden: tuple[int, ...] = (64, 64), context: bool = False, pool: int = 0
+    ) -> None:
         super().__init__()
         self.k = n_candidates
         self.f = len(CANDIDATE_FEATURES)
         self.context = context
+        self.pool = pool
+        if pool:
+            self.embed = nn.Sequential(nn.Linear(self.f + 1, 32), nn.Tanh(), nn.Linear(32, pool), nn.Tanh())
         layers: list[nn.Module] = []
-        width = self.f + 1 + (len(CONTEXT_FEATURES) if context else 0)
+        width = self.f + 1 + (len(CONTEXT_FEATURES) if context else 0) + 2 * pool
         for h in hidden:
             layers += [nn.Linear(width, h), nn.Tanh()]
             width = h
@@ -67,7 +81,21 @@ class CandidateScorer(nn.Module):
         parts = [rows, left]
         if self.context:
             parts.append(decision_context(rows).unsqueeze(1).expand(-1, self.k, len(CONTEXT_FEATURES)))
+        if self.pool:
+            parts.append(
+                self._summary(torch.cat([rows, left], dim=-1)).unsqueeze(1).expand(-1, self.k, 2 * self.pool)
+            )
         return self.head(self.body(torch.cat(parts, dim=-1))).squeeze(-1)
+
+    def _summary(self, rows: torch.Tensor) -> torch.Tensor:
+        """Mean and maximum of the offered rows' embeddings: ``(B, K, F + 1) -> (B, 2 W)`` (zeros if none)."""
+        offered = (rows[..., CANDIDATE_FEATURES.index("valid")] > 0.5).unsqueeze(-1)
+        e = self.embed(rows)
+        count = offered.sum(1).clamp(min=1)
+        mean = torch.where(offered, e, torch.zeros_like(e)).sum(1) / count
+        top = e.masked_fill(~offered, float("-inf")).max(1).values
+        top = torch.where(offered.any(1), top, torch.zeros_like(top))
+        return torch.cat([mean, top], dim=-1)
 
 
 def decision_context(rows: torch.Tensor) -> torch.Tensor:
@@ -88,7 +116,9 @@ class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
     The observation must hold exactly :data:`OBS_KEYS`. The actor's MLP is empty (the scorer reads
     the observation itself); the critic's is ``net_arch["vf"]`` (64, 64 by default). ``context``
     (a ``policy_kwargs`` entry, saved with the model) gives the scorer the decision's
-    :data:`CONTEXT_FEATURES`.
+    :data:`CONTEXT_FEATURES`, and ``pool`` (another, saved alike) its learned summary of the
+    decision (2 W figures: the mean and maximum of a W-wide embedding); models saved before
+    either option load without it.
     """
 
     def __init__(
@@ -97,9 +127,11 @@ class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
         action_space: Any,
         lr_schedule: Any,
         context: bool = False,
+        pool: int = 0,
         **kwargs: Any,
     ) -> None:
         self.context = context
+        self.pool = pool
         keys = tuple(observation_space.spaces)
         if keys != OBS_KEYS:
             raise ValueError(f"CandidatePolicy reads the observation keys {OBS_KEYS}, got {keys}")
@@ -111,8 +143,8 @@ class CandidatePolicy(MaskableMultiInputActorCriticPolicy):
 
     def _build(self, lr_schedule: Any) -> None:
         super()._build(lr_schedule)
-        self.action_net = CandidateScorer(int(self.action_space.n), context=self.context)
+        self.action_net = CandidateScorer(int(self.action_space.n), context=self.context, pool=self.pool)
         self.optimizer = self.optimizer_class(self.parameters(), lr=lr_schedule(1), **self.optimizer_kwargs)
 
     def _get_constructor_parameters(self) -> dict[str, Any]:
-        return {**super()._get_constructor_parameters(), "context": self.context}
+        return {**super()._get_constructor_parameters(), "context": self.context, "pool": self.pool}

@@ -35,7 +35,7 @@ presets (measured on 2 CPU cores):
   learned  the learned explorer on offices, schools and houses at their default sizes and
            step limits: 20,000 decisions cloning the structure-utility-area-short rule
            (the gain rule in houses; --teacher names one rule for every id), every id
-           weighed alike, then 40,000 of MaskablePPO (--timesteps sets these; 24 to 39
+           weighed alike, then 40,000 of MaskablePPO (--timesteps sets these; 22 to 39
            minutes), then 2 episodes per agent and id; the policy's scorer sees the decision's
            context and a learned summary of all its candidates
   learned-house-rule  the learned recipe before the scorer's summary and the balanced

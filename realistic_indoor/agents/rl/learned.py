@@ -90,7 +90,7 @@ class LearnedConfig:
         scorer_pool: Width of the learned summary of the whole decision the scorer gives every
             candidate (:class:`~realistic_indoor.agents.rl.scorer.CandidateScorer`'s ``pool``;
             0: none). With it the policy follows each id's rule more closely: on held-out
-            cloning decisions of seed 0, 87% in houses against 68% without it, 97% in offices
+            cloning decisions of seed 0, 87% in houses against 69% without it, 97% in offices
             and schools against 93-95% (95%, 96% and 96% with ``bc_balance`` too).
         bc_balance: Weight the cloned decisions so that every id counts alike in the cloning
             loss (a house has a tenth of a school's decisions: without it the policy learns the

@@ -328,16 +328,13 @@ def _rules(config) -> str:
 
 def _scorer(config) -> str:
     """What the scorer sees and how cloning weighs the ids, in words."""
-    sees = [
-        *(["the decision's context"] if config.scorer_context else []),
-        *(
-            [
-                f"a pooled summary of the decision (the mean and maximum of {config.scorer_pool} learned figures)"
-            ]
-            if config.scorer_pool
-            else []
-        ),
-    ]
+    sees = []
+    if config.scorer_context:
+        sees.append("the decision's context")
+    if config.scorer_pool:
+        sees.append(
+            f"a pooled summary of the decision (the mean and maximum of {config.scorer_pool} learned figures)"
+        )
     scorer = f"a scorer that sees {' and '.join(sees)}" if sees else "a scorer of each candidate alone"
     return scorer + (", every id weighed alike in cloning" if config.bc_balance else "")
 
